@@ -1,0 +1,46 @@
+# rtlab_add_library(<name> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...] [PACKAGE_DEPS ...])
+#
+# Creates the static library rtlab_<name> with alias rtlab::<name>, its public headers under
+# libs/<name>/include, and (for the top-level project) its install rules and exported targets.
+# PACKAGE_DEPS names the external packages that a consumer of the installed component must find
+# (find_dependency lines in rtlabConfig.cmake); they are recorded per component.
+function(rtlab_add_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS;PACKAGE_DEPS;RTLAB_DEPS" ${ARGN})
+  set(target rtlab_${name})
+  add_library(${target} STATIC ${ARG_SOURCES})
+  add_library(rtlab::${name} ALIAS ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} POSITION_INDEPENDENT_CODE ON)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  target_include_directories(${target} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>
+    PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
+  foreach(dep IN LISTS ARG_RTLAB_DEPS)
+    target_link_libraries(${target} PUBLIC rtlab::${dep})
+  endforeach()
+  target_link_libraries(${target} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS}
+    $<BUILD_INTERFACE:rtlab_warnings>)
+
+  set_property(GLOBAL APPEND PROPERTY RTLAB_COMPONENTS ${name})
+  set_property(GLOBAL PROPERTY RTLAB_COMPONENT_${name}_RTLAB_DEPS "${ARG_RTLAB_DEPS}")
+  set_property(GLOBAL PROPERTY RTLAB_COMPONENT_${name}_PACKAGE_DEPS "${ARG_PACKAGE_DEPS}")
+
+  if(RTLAB_INSTALL)
+    install(TARGETS ${target} EXPORT rtlab_${name}_targets
+      ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+    install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+    install(EXPORT rtlab_${name}_targets NAMESPACE rtlab:: FILE rtlab_${name}_targets.cmake
+      DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/rtlab)
+  endif()
+endfunction()
+
+# rtlab_add_app(<name> SOURCES ... LIBS ...): an executable named rtlab-<name> in bin/.
+function(rtlab_add_app name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS" ${ARGN})
+  add_executable(rtlab_app_${name} ${ARG_SOURCES})
+  set_target_properties(rtlab_app_${name} PROPERTIES OUTPUT_NAME rtlab-${name})
+  target_link_libraries(rtlab_app_${name} PRIVATE ${ARG_LIBS} rtlab_warnings)
+  if(RTLAB_INSTALL)
+    install(TARGETS rtlab_app_${name} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  endif()
+endfunction()

@@ -1,0 +1,23 @@
+#pragma once
+/// \brief Loading triangle meshes from PLY (own reader) and OBJ (tinyobjloader).
+#include <rtlab/geometry/triangle_mesh.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+/// \brief What a loader reports besides the mesh.
+struct MeshLoadInfo {
+    std::string format;                 ///< "ply ascii", "ply binary_little_endian", "obj", ...
+    std::vector<std::string> warnings;  ///< non-fatal problems (a missing .mtl, say)
+};
+
+/// Loads by extension (.ply or .obj, any case). Bad input throws rtlab::Error naming the file, the
+/// line or element and the problem; nothing partial is returned.
+TriangleMesh load_mesh(const std::filesystem::path& path, MeshLoadInfo* info = nullptr);
+TriangleMesh load_ply(const std::filesystem::path& path, MeshLoadInfo* info = nullptr);
+TriangleMesh load_obj(const std::filesystem::path& path, MeshLoadInfo* info = nullptr);
+
+}  // namespace rtlab

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs rtlab's build dependencies from Debian 12 packages. Idempotent: quiet when everything is
+# already installed; uses sudo when not run as root.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libglm-dev libstb-dev libtinyobjloader-dev catch2 libtbb-dev libcli11-dev nlohmann-json3-dev
+  libfmt-dev libpcg-cpp-dev libbenchmark-dev
+  libembree-dev      # optional reference backend; the build works without it
+  python3-matplotlib # charts (scripts/charts.sh, run with /usr/bin/python3)
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done"
