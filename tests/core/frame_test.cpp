@@ -35,7 +35,7 @@ TEST_CASE("frames near +z and -z stay orthonormal", "[frame]") {
     CHECK(orthonormality_error(Frame::from_normal(Vec3(0, 0, -0.0f) + Vec3(1, 0, 0))) < 1e-6f);
 }
 
-TEST_CASE("frames over the whole sphere, and local/world round trips", "[frame]") {
+TEST_CASE("frames over the whole sphere and local-world round trips", "[frame]") {
     Rng rng(42);
     float worst = 0.0f;
     for (int i = 0; i < 100000; ++i) {

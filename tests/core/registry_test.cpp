@@ -45,7 +45,7 @@ TEST_CASE("unknown names list the known ones", "[registry]") {
     CHECK_THROWS_WITH(empty.create("x", Params{}), Contains("none registered"));
 }
 
-TEST_CASE("missing, mistyped and unused parameters are errors naming the object", "[registry]") {
+TEST_CASE("missing or mistyped or unused parameters are errors naming the object", "[registry]") {
     const auto r = make_registry();
     CHECK_THROWS_WITH(r.create("cube", Params{}), Contains("shape 'cube'") && Contains("missing parameter 'side'"));
     CHECK_THROWS_WITH(r.create("cube", Params{}.set("side", std::string("big"))),

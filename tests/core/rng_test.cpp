@@ -26,7 +26,7 @@ TEST_CASE("different pixels and seeds give different sequences", "[rng]") {
     CHECK(seen.size() == 128);
 }
 
-TEST_CASE("uniform floats lie in [0, 1) and are roughly uniform", "[rng]") {
+TEST_CASE("uniform floats lie in the half-open unit interval and are roughly uniform", "[rng]") {
     Rng r(7);
     int buckets[10] = {};
     constexpr int n = 100000;
