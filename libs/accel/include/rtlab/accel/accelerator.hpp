@@ -1,0 +1,64 @@
+#pragma once
+/// \brief The one interface every acceleration structure over a triangle mesh offers, and the factory
+/// that builds one by name ("kd-sah", "bvh", "embree", ...).
+#include <rtlab/core/ray.hpp>
+#include <rtlab/geometry/triangle_intersect.hpp>
+#include <rtlab/geometry/triangle_mesh.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rtlab {
+
+/// \brief Closest hit on a mesh: t, triangle index and barycentrics (point = (1-u-v) p0 + u p1 + v p2).
+struct MeshHit {
+    float t = kInfinity;
+    std::uint32_t primitive = 0xFFFFFFFFu;
+    float u = 0.0f;
+    float v = 0.0f;
+    bool hit() const { return primitive != 0xFFFFFFFFu; }
+};
+
+/// \brief Size and shape of a built structure; fields that do not apply stay at -1.
+struct AccelStats {
+    double build_seconds = 0.0;
+    std::int64_t nodes = -1;
+    std::int64_t leaves = -1;
+    std::int64_t empty_leaves = -1;
+    std::int64_t max_depth = -1;
+    double mean_leaf_primitives = -1.0;  ///< over non-empty leaves
+    std::int64_t bytes = -1;             ///< nodes + primitive index arrays + per-primitive precomputation
+    double sah_cost = -1.0;              ///< expected cost by the structure's own cost model
+};
+
+/// \brief Options common to all builders (each builder reads what applies to it).
+struct BuildOptions {
+    TriangleTest triangle_test = TriangleTest::watertight;
+    int threads = 0;  ///< 0: oneTBB's default
+};
+
+/// \brief An acceleration structure over one triangle mesh (which must outlive it).
+class TriangleAccelerator {
+public:
+    virtual ~TriangleAccelerator() = default;
+    /// The method name it was built with ("kd-sah").
+    virtual std::string_view name() const = 0;
+    /// Closest hit with ray.tmin < t < ray.tmax; fills hit and returns true on a hit.
+    virtual bool intersect(const Ray& ray, MeshHit& hit) const = 0;
+    /// Any hit with ray.tmin < t < ray.tmax; stops at the first blocker.
+    virtual bool occluded(const Ray& ray) const = 0;
+    virtual AccelStats stats() const = 0;
+};
+
+/// Every method name the factory knows, in a stable order ("embree" only when built with Embree).
+std::vector<std::string> accelerator_methods();
+
+/// Builds the named structure. Unknown names throw rtlab::Error listing the known ones.
+std::unique_ptr<TriangleAccelerator> make_accelerator(std::string_view method, const TriangleMesh& mesh,
+                                                      const BuildOptions& options = {});
+
+}  // namespace rtlab
