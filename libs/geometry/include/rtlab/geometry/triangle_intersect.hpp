@@ -1,8 +1,13 @@
 #pragma once
 /// \brief The three ray-triangle tests rtlab compares: watertight (default), Moller-Trumbore, plane + 2x2.
+///
+/// All three accept hits with tmin < t < tmax and report barycentrics (u, v) with
+/// point = (1-u-v) p0 + u p1 + v p2. They are defined inline: they are the innermost loop of every
+/// accelerator. Degenerate triangles (zero area) are never hit.
 #include <rtlab/core/math.hpp>
 #include <rtlab/core/ray.hpp>
 
+#include <cmath>
 #include <optional>
 #include <string_view>
 
@@ -22,35 +27,95 @@ struct TriangleHit {
     float v;
 };
 
-/// \brief Per-ray precomputation of Woop, Benthin and Wald 2013 (axis permutation and shear).
+/// \brief Per-ray precomputation of Woop, Benthin and Wald 2013: the axis kz of the largest direction
+/// component, the other two permuted to keep the winding, and the shear that maps the ray to +z.
 struct WatertightRay {
     Point3 origin;
-    int kx, ky, kz;
-    float sx, sy, sz;
+    int kx = 0, ky = 1, kz = 2;
+    float sx = 0.0f, sy = 0.0f, sz = 1.0f;
+    bool valid = false;  ///< false for a zero or non-finite direction or origin: such rays hit nothing
+
     explicit WatertightRay(const Ray& ray);
 };
 
-/// Watertight test (Woop et al. 2013): no ray through a shared edge or vertex of a closed mesh escapes.
-std::optional<TriangleHit> intersect_watertight(const WatertightRay& ray, float tmin, float tmax, const Point3& p0,
-                                                const Point3& p1, const Point3& p2);
+/// Watertight test (Woop et al. 2013): a ray through a shared edge or vertex of a closed mesh hits at
+/// least one of the triangles there, never none. Edge functions that round to exactly zero are
+/// recomputed in double precision, as the paper prescribes.
+inline std::optional<TriangleHit> intersect_watertight(const WatertightRay& r, float tmin, float tmax,
+                                                       const Point3& p0, const Point3& p1, const Point3& p2) {
+    if (!r.valid) return std::nullopt;
+    const Vec3 a = p0 - r.origin, b = p1 - r.origin, c = p2 - r.origin;
+    const float ax = a[r.kx] - r.sx * a[r.kz], ay = a[r.ky] - r.sy * a[r.kz];
+    const float bx = b[r.kx] - r.sx * b[r.kz], by = b[r.ky] - r.sy * b[r.kz];
+    const float cx = c[r.kx] - r.sx * c[r.kz], cy = c[r.ky] - r.sy * c[r.kz];
+    float u = cx * by - cy * bx;
+    float v = ax * cy - ay * cx;
+    float w = bx * ay - by * ax;
+    if (u == 0.0f || v == 0.0f || w == 0.0f) {
+        u = static_cast<float>(static_cast<double>(cx) * by - static_cast<double>(cy) * bx);
+        v = static_cast<float>(static_cast<double>(ax) * cy - static_cast<double>(ay) * cx);
+        w = static_cast<float>(static_cast<double>(bx) * ay - static_cast<double>(by) * ax);
+    }
+    if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return std::nullopt;
+    const float det = u + v + w;
+    if (det == 0.0f || !std::isfinite(det)) return std::nullopt;
+    const float az = r.sz * a[r.kz], bz = r.sz * b[r.kz], cz = r.sz * c[r.kz];
+    const float t_scaled = u * az + v * bz + w * cz;
+    // Compare t * det against the range before dividing (the sign of det flips the comparison).
+    if (det > 0.0f ? !(t_scaled > tmin * det && t_scaled < tmax * det)
+                   : !(t_scaled < tmin * det && t_scaled > tmax * det))
+        return std::nullopt;
+    const float inv = 1.0f / det;
+    const float t = t_scaled * inv;
+    if (!(t > tmin && t < tmax)) return std::nullopt;  // tmax = inf makes tmax * det an inf or NaN above
+    return TriangleHit{t, v * inv, w * inv};
+}
 
 /// Moller-Trumbore 1997: fast, but rays through edges and vertices can slip between triangles.
-std::optional<TriangleHit> intersect_moller(const Ray& ray, float tmin, float tmax, const Point3& p0, const Point3& p1,
-                                            const Point3& p2);
+inline std::optional<TriangleHit> intersect_moller(const Ray& ray, float tmin, float tmax, const Point3& p0,
+                                                   const Point3& p1, const Point3& p2) {
+    const Vec3 e1 = p1 - p0, e2 = p2 - p0;
+    const Vec3 pvec = glm::cross(ray.direction, e2);
+    const float det = glm::dot(e1, pvec);
+    if (det == 0.0f || !std::isfinite(det)) return std::nullopt;
+    const float inv = 1.0f / det;
+    const Vec3 tvec = ray.origin - p0;
+    const float u = glm::dot(tvec, pvec) * inv;
+    if (!(u >= 0.0f && u <= 1.0f)) return std::nullopt;
+    const Vec3 qvec = glm::cross(tvec, e1);
+    const float v = glm::dot(ray.direction, qvec) * inv;
+    if (!(v >= 0.0f && u + v <= 1.0f)) return std::nullopt;
+    const float t = glm::dot(e2, qvec) * inv;
+    if (!(t > tmin && t < tmax)) return std::nullopt;
+    return TriangleHit{t, u, v};
+}
 
 /// \brief The course's method, precomputed per triangle: the supporting plane, then alpha and beta from
 /// the 2x2 system projected on the plane's dominant axis (the largest of the three 2x2 determinants).
 struct PlaneTriangle {
-    Normal3 normal;   ///< unnormalised plane normal (p1 - p0) x (p2 - p0)
-    float offset;     ///< dot(normal, p0)
-    Point3 p0;
-    int ax, ay;       ///< the two axes kept by the projection
-    float e1x, e1y, e2x, e2y;  ///< projected edges p1 - p0 and p2 - p0
-    float inv_det;    ///< 1 / (e1x e2y - e1y e2x); 0 for a degenerate triangle
+    Normal3 normal{0.0f};  ///< unnormalised plane normal (p1 - p0) x (p2 - p0)
+    float offset = 0.0f;   ///< dot(normal, p0)
+    float p0x = 0.0f, p0y = 0.0f;
+    int ax = 0, ay = 1;        ///< the two axes kept by the projection
+    float e1x = 0.0f, e1y = 0.0f, e2x = 0.0f, e2y = 0.0f;  ///< projected edges p1 - p0 and p2 - p0
+    float inv_det = 0.0f;  ///< 1 / (e1x e2y - e1y e2x); 0 marks a degenerate triangle (never hit)
+
     PlaneTriangle() = default;
     PlaneTriangle(const Point3& p0, const Point3& p1, const Point3& p2);
 };
 
-std::optional<TriangleHit> intersect_plane(const Ray& ray, float tmin, float tmax, const PlaneTriangle& tri);
+inline std::optional<TriangleHit> intersect_plane(const Ray& ray, float tmin, float tmax, const PlaneTriangle& tri) {
+    if (tri.inv_det == 0.0f) return std::nullopt;
+    const float denom = glm::dot(tri.normal, ray.direction);
+    if (denom == 0.0f) return std::nullopt;  // parallel to the plane
+    const float t = (tri.offset - glm::dot(tri.normal, ray.origin)) / denom;
+    if (!(t > tmin && t < tmax)) return std::nullopt;
+    const float px = ray.origin[tri.ax] + t * ray.direction[tri.ax] - tri.p0x;
+    const float py = ray.origin[tri.ay] + t * ray.direction[tri.ay] - tri.p0y;
+    const float alpha = (px * tri.e2y - py * tri.e2x) * tri.inv_det;
+    const float beta = (tri.e1x * py - tri.e1y * px) * tri.inv_det;
+    if (!(alpha >= 0.0f && beta >= 0.0f && alpha + beta <= 1.0f)) return std::nullopt;
+    return TriangleHit{t, alpha, beta};
+}
 
 }  // namespace rtlab
