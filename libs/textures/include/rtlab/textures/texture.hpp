@@ -1,0 +1,35 @@
+#pragma once
+/// \brief The texture interface, the lookup it answers, and the registry that creates textures by name.
+#include <rtlab/core/color.hpp>
+#include <rtlab/core/math.hpp>
+#include <rtlab/core/registry.hpp>
+
+namespace rtlab {
+
+/// \brief Everything a texture may look at: surface uv, the object-space point (solid textures) and
+/// the direction (environment maps). A caller fills what it has; each texture documents what it reads.
+struct TextureLookup {
+    Vec2 uv{0.0f};             ///< surface coordinates; u to the right, v up (v = 0 is an image's bottom row)
+    Point3 point{0.0f};        ///< object-space point, for solid textures (checker3d, 3D noise)
+    Vec3 direction{0.0f, 0.0f, 1.0f};  ///< lookup direction for environment maps (need not be unit length)
+};
+
+/// \brief A colour as a function of a TextureLookup. eval is const and thread-safe.
+class Texture {
+public:
+    virtual ~Texture() = default;
+    virtual RGB eval(const TextureLookup& lookup) const = 0;
+};
+
+/// Nested textures travel inside Params as objects: params.set_object<Texture>("texture1", t).
+using TextureRegistry = Registry<Texture>;
+
+/// Registers every built-in texture by name: solid, checker, checker3d, mandelbrot, perlin, simplex,
+/// image, cubemap. Each registration's doc() lists its parameters and their defaults. A plugin adds its
+/// own textures to the same registry with TextureRegistry::add, without touching this library.
+void register_builtins(TextureRegistry& registry);
+
+/// A registry with category "texture" and every built-in registered.
+TextureRegistry make_texture_registry();
+
+}  // namespace rtlab

@@ -1,0 +1,77 @@
+#pragma once
+// The patterns "perlin" and "simplex" share: plain noise, fBm, turbulence and marble over a noise type,
+// in 2D (uv) or 3D (object-space point), mapped to a blend of two colours.
+#include <rtlab/textures/fractal_noise.hpp>
+
+#include "texture_params.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace rtlab::detail {
+
+enum class NoisePattern { noise, fbm, turbulence, marble };
+
+struct NoiseSettings {
+    int dimension = 3;
+    NoisePattern pattern = NoisePattern::noise;
+    double scale = 1.0;
+    FractalParams fractal{};
+    double stripes = 1.0;
+    double distortion = 4.0;
+    RGB color1{0.0f}, color2{1.0f};
+    std::uint64_t seed = 0;
+};
+
+/// Reads the parameters listed in noise_doc() and checks them.
+NoiseSettings read_noise_settings(const Params& params);
+/// The registration doc string for a noise texture named `name`.
+std::string noise_doc(const std::string& what);
+
+/// \brief A noise pattern: t in [0, 1] blends color1 (t = 0) to color2 (t = 1).
+template <class Noise>
+class NoisePatternTexture final : public Texture {
+public:
+    explicit NoisePatternTexture(const NoiseSettings& s) : m_s(s), m_noise(s.seed) {}
+
+    /// The pattern value t in [0, 1] before colouring.
+    float pattern(const TextureLookup& q) const {
+        const double s = m_s.scale;
+        if (m_s.dimension == 2)
+            return shade(q.uv.x * s, [&](auto&& f) { return f(q.uv.x * s, q.uv.y * s); });
+        return shade(q.point.x * s, [&](auto&& f) { return f(q.point.x * s, q.point.y * s, q.point.z * s); });
+    }
+
+    RGB eval(const TextureLookup& q) const override { return lerp(m_s.color1, m_s.color2, pattern(q)); }
+
+private:
+    // `at` calls its argument with the scaled coordinates (2 or 3 doubles).
+    template <class At>
+    float shade(double x, At&& at) const {
+        const auto& fr = m_s.fractal;
+        float t = 0.0f;
+        switch (m_s.pattern) {
+            case NoisePattern::noise:
+                t = 0.5f + 0.5f * at([&](auto... c) { return m_noise.eval(c...); });
+                break;
+            case NoisePattern::fbm:
+                t = 0.5f + 0.5f * at([&](auto... c) { return fbm(m_noise, c..., fr); });
+                break;
+            case NoisePattern::turbulence:
+                t = at([&](auto... c) { return turbulence(m_noise, c..., fr); });
+                break;
+            case NoisePattern::marble: {
+                const float turb = at([&](auto... c) { return turbulence(m_noise, c..., fr); });
+                const double phase = 2.0 * std::numbers::pi * m_s.stripes * x + m_s.distortion * turb;
+                t = static_cast<float>(0.5 + 0.5 * std::sin(phase));
+                break;
+            }
+        }
+        return std::clamp(t, 0.0f, 1.0f);
+    }
+
+    NoiseSettings m_s;
+    Noise m_noise;
+};
+
+}  // namespace rtlab::detail

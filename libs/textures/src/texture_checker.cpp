@@ -1,0 +1,57 @@
+// Texture "checker": a 2D checkerboard in uv.
+//
+// Tile (i, j) = (floor(u * tiles_u), floor(v * tiles_v)); tiles with i + j even show the first colour
+// (or texture), odd ones the second. A point exactly on a tile border belongs to the tile above it
+// (floor), also for negative coordinates: u = -0.25 with tiles_u = 4 is tile -1 (odd). The products
+// are formed in double, where float * float is exact, so borders fall exactly where the numbers say.
+//
+// Parameters
+//   tiles_u    tiles per unit of u, > 0                      default 8
+//   tiles_v    tiles per unit of v, > 0                      default tiles_u
+//   color1     colour of even tiles                          default 1 (white)
+//   color2     colour of odd tiles                           default 0 (black)
+//   texture1   nested texture for even tiles (instead of color1)
+//   texture2   nested texture for odd tiles (instead of color2)
+// Nested textures see the unmodified lookup.
+#include "texture_params.hpp"
+
+#include <cmath>
+
+namespace rtlab::detail {
+
+namespace {
+class CheckerTexture final : public Texture {
+public:
+    CheckerTexture(double tiles_u, double tiles_v, std::shared_ptr<const Texture> even,
+                   std::shared_ptr<const Texture> odd)
+        : m_tiles_u(tiles_u), m_tiles_v(tiles_v), m_even(std::move(even)), m_odd(std::move(odd)) {}
+
+    RGB eval(const TextureLookup& q) const override {
+        const double i = std::floor(static_cast<double>(q.uv.x) * m_tiles_u);
+        const double j = std::floor(static_cast<double>(q.uv.y) * m_tiles_v);
+        // fmod keeps the parity exact for any size; non-finite uv gives NaN, which compares unequal: even.
+        const bool odd = std::abs(std::fmod(i, 2.0)) + std::abs(std::fmod(j, 2.0)) == 1.0;
+        return (odd ? m_odd : m_even)->eval(q);
+    }
+
+private:
+    double m_tiles_u, m_tiles_v;
+    std::shared_ptr<const Texture> m_even, m_odd;
+};
+}  // namespace
+
+void register_checker(TextureRegistry& registry) {
+    registry.add(
+        "checker",
+        [](const Params& p) -> std::shared_ptr<Texture> {
+            const float tu = positive_float(p, "tiles_u", 8.0f);
+            const float tv = positive_float(p, "tiles_v", tu);
+            return std::make_shared<CheckerTexture>(tu, tv, colour_or_texture(p, "color1", "texture1", RGB(1.0f)),
+                                                    colour_or_texture(p, "color2", "texture2", RGB(0.0f)));
+        },
+        "2D checkerboard in uv, tile (floor(u tiles_u), floor(v tiles_v)), even tiles first. "
+        "tiles_u: tiles per unit u (default 8); tiles_v (default tiles_u); color1 (default 1) or texture1; "
+        "color2 (default 0) or texture2");
+}
+
+}  // namespace rtlab::detail

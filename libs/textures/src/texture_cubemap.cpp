@@ -1,0 +1,209 @@
+// Texture "cubemap": an environment (skybox) looked up by lookup.direction.
+//
+// Faces follow the OpenGL / Direct3D cube-map convention stated in rtlab/textures/cube_map.hpp (px nx
+// py ny pz nz; face by the largest |component|; s along columns, t down the rows). Give either the six
+// face files, one horizontal-cross file (4N x 3N: py above pz; nx pz px nz; ny below pz), or a folder
+// holding px.<ext> ... nz.<ext>. Filtering is bilinear and seamless: texels beyond a face's edge are read
+// from the neighbouring face, so there is no seam at any of the 12 edges.
+//
+// Parameters (exactly one of the three sources)
+//   px nx py ny pz nz   the six face files
+//   cross               one horizontal-cross file
+//   folder              a folder with px.<extension> ... nz.<extension>
+//   extension           file extension used with folder                 default "jpg"
+//   encoding            srgb | linear: how 8-bit files are decoded      default srgb
+//   intensity           multiplier on the looked-up colour, >= 0        default 1
+#include <rtlab/core/error.hpp>
+#include <rtlab/core/file.hpp>
+#include <rtlab/textures/cube_map.hpp>
+
+#include "texture_params.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace rtlab {
+
+namespace {
+constexpr const char* kFaceNames[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+
+// Where each face sits in the horizontal cross, in face-size units (column, row).
+constexpr int kCrossCell[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}};
+}  // namespace
+
+CubeFaceCoord cube_face_coord(const Vec3& d) {
+    const float ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
+    CubeFace face;
+    float sc, tc, ma;
+    if (ax >= ay && ax >= az) {
+        ma = ax;
+        face = d.x >= 0.0f ? CubeFace::px : CubeFace::nx;
+        sc = d.x >= 0.0f ? -d.z : d.z;
+        tc = -d.y;
+    } else if (ay >= az) {
+        ma = ay;
+        face = d.y >= 0.0f ? CubeFace::py : CubeFace::ny;
+        sc = d.x;
+        tc = d.y >= 0.0f ? d.z : -d.z;
+    } else {
+        ma = az;
+        face = d.z >= 0.0f ? CubeFace::pz : CubeFace::nz;
+        sc = d.z >= 0.0f ? d.x : -d.x;
+        tc = -d.y;
+    }
+    // |sc|, |tc| <= ma, so the correctly rounded quotients stay in [-1, 1] and s, t in [0, 1].
+    return {face, 0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f)};
+}
+
+Vec3 cube_face_direction(CubeFace face, float s, float t) {
+    const float sc = 2.0f * s - 1.0f, tc = 2.0f * t - 1.0f;
+    switch (face) {
+        case CubeFace::px: return {1.0f, -tc, -sc};
+        case CubeFace::nx: return {-1.0f, -tc, sc};
+        case CubeFace::py: return {sc, 1.0f, tc};
+        case CubeFace::ny: return {sc, -1.0f, -tc};
+        case CubeFace::pz: return {sc, -tc, 1.0f};
+        case CubeFace::nz: return {-sc, -tc, -1.0f};
+    }
+    return {0.0f, 0.0f, 1.0f};
+}
+
+CubeMapTexture::CubeMapTexture(std::array<Image, 6> faces) : m_faces(std::move(faces)) {
+    m_size = m_faces[0].width();
+    for (int f = 0; f < 6; ++f) {
+        const Image& img = m_faces[f];
+        const std::string size = std::to_string(img.width()) + "x" + std::to_string(img.height());
+        if (img.empty()) throw Error(std::string("cube map face '") + kFaceNames[f] + "' is empty");
+        if (img.width() != img.height())
+            throw Error(std::string("cube map face '") + kFaceNames[f] + "' is " + size + ", not square");
+        if (img.width() != m_size)
+            throw Error(std::string("cube map face '") + kFaceNames[f] + "' is " + size + " but face 'px' is " +
+                        std::to_string(m_size) + "x" + std::to_string(m_size) + "; all faces must be the same size");
+    }
+}
+
+std::shared_ptr<CubeMapTexture> CubeMapTexture::from_cross(const Image& cross) {
+    const int n = cross.width() / 4;
+    if (cross.empty() || cross.width() != 4 * n || cross.height() != 3 * n)
+        throw Error("cube map cross image is " + std::to_string(cross.width()) + "x" + std::to_string(cross.height()) +
+                    ", not 4N x 3N (a horizontal cross)");
+    std::array<Image, 6> faces;
+    for (int f = 0; f < 6; ++f) {
+        faces[f] = Image(n, n);
+        const int x0 = kCrossCell[f][0] * n, y0 = kCrossCell[f][1] * n;
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) faces[f].at(x, y) = cross.at(x0 + x, y0 + y);
+    }
+    return std::make_shared<CubeMapTexture>(std::move(faces));
+}
+
+std::shared_ptr<CubeMapTexture> CubeMapTexture::load_faces(const std::array<std::filesystem::path, 6>& paths,
+                                                           ColorEncoding encoding) {
+    std::array<Image, 6> faces;
+    for (int f = 0; f < 6; ++f) faces[f] = read_image(paths[f], encoding);
+    try {
+        return std::make_shared<CubeMapTexture>(std::move(faces));
+    } catch (const Error& e) {
+        // Name the files: "face 'ny'" alone does not say which file is wrong.
+        std::string files;
+        for (int f = 0; f < 6; ++f) files += std::string(f ? ", " : "") + kFaceNames[f] + " = '" + paths[f].string() + "'";
+        throw Error(std::string(e.what()) + " (files " + files + ")");
+    }
+}
+
+std::shared_ptr<CubeMapTexture> CubeMapTexture::load_cross(const std::filesystem::path& path, ColorEncoding encoding) {
+    const Image cross = read_image(path, encoding);
+    try {
+        return from_cross(cross);
+    } catch (const Error& e) {
+        throw Error(file_error_message(path, e.what()));
+    }
+}
+
+RGB CubeMapTexture::texel(CubeFace face, int x, int y) const {
+    const int n = m_size;
+    const bool in_x = x >= 0 && x < n, in_y = y >= 0 && y < n;
+    if (in_x && in_y) return m_faces[static_cast<int>(face)].at(x, y);
+    const int cx = std::clamp(x, 0, n - 1), cy = std::clamp(y, 0, n - 1);
+    if (!in_x && !in_y) {
+        // Beyond a cube corner, where only three faces meet: the mean of their three corner texels.
+        return (texel(face, cx, cy) + texel(face, x, cy) + texel(face, cx, y)) * (1.0f / 3.0f);
+    }
+    // One texel beyond an edge: the neighbouring face's texel whose centre is nearest to this one's.
+    const float s = (static_cast<float>(x) + 0.5f) / static_cast<float>(n);
+    const float t = (static_cast<float>(y) + 0.5f) / static_cast<float>(n);
+    const CubeFaceCoord c = cube_face_coord(cube_face_direction(face, s, t));
+    const int nx = std::clamp(static_cast<int>(c.s * static_cast<float>(n)), 0, n - 1);
+    const int ny = std::clamp(static_cast<int>(c.t * static_cast<float>(n)), 0, n - 1);
+    return m_faces[static_cast<int>(c.face)].at(nx, ny);
+}
+
+RGB CubeMapTexture::sample(const Vec3& direction) const {
+    if (!is_finite(direction) || direction == Vec3(0.0f)) return {};
+    const CubeFaceCoord c = cube_face_coord(direction);
+    const float n = static_cast<float>(m_size);
+    const float x = c.s * n - 0.5f, y = c.t * n - 0.5f;
+    const float x0 = std::floor(x), y0 = std::floor(y);
+    const float fx = x - x0, fy = y - y0;
+    const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
+    const RGB top = lerp(texel(c.face, ix, iy), texel(c.face, ix + 1, iy), fx);
+    const RGB bottom = lerp(texel(c.face, ix, iy + 1), texel(c.face, ix + 1, iy + 1), fx);
+    return lerp(top, bottom, fy);
+}
+
+namespace detail {
+
+namespace {
+class ScaledTexture final : public Texture {
+public:
+    ScaledTexture(std::shared_ptr<const Texture> inner, float scale) : m_inner(std::move(inner)), m_scale(scale) {}
+    RGB eval(const TextureLookup& q) const override { return m_inner->eval(q) * m_scale; }
+
+private:
+    std::shared_ptr<const Texture> m_inner;
+    float m_scale;
+};
+}  // namespace
+
+void register_cubemap(TextureRegistry& registry) {
+    registry.add(
+        "cubemap",
+        [](const Params& p) -> std::shared_ptr<Texture> {
+            int faces_given = 0;
+            for (const char* name : kFaceNames) faces_given += p.has(name) ? 1 : 0;
+            const int sources = (faces_given > 0 ? 1 : 0) + (p.has("cross") ? 1 : 0) + (p.has("folder") ? 1 : 0);
+            if (sources != 1)
+                throw Error(p.context() + ": give exactly one of the six faces (px nx py ny pz nz), 'cross' or 'folder'");
+            if (p.has("extension") && !p.has("folder")) fail_param(p, "extension", "is only used with 'folder'");
+            const ColorEncoding encoding = get_encoding(p);
+            const float intensity = positive_float(p, "intensity", 1.0f, true);
+            std::shared_ptr<CubeMapTexture> map;
+            try {
+                if (p.has("cross")) {
+                    map = CubeMapTexture::load_cross(p.get_string("cross"), encoding);
+                } else {
+                    std::array<std::filesystem::path, 6> paths;
+                    const std::string folder = p.has("folder") ? p.get_string("folder") : "";
+                    const std::string ext = p.get_string("extension", "jpg");
+                    for (int f = 0; f < 6; ++f) {
+                        if (!folder.empty()) paths[f] = std::filesystem::path(folder) / (std::string(kFaceNames[f]) + "." + ext);
+                        else if (p.has(kFaceNames[f])) paths[f] = p.get_string(kFaceNames[f]);
+                        else fail_param(p, kFaceNames[f], "is missing: all six faces are needed");
+                    }
+                    map = CubeMapTexture::load_faces(paths, encoding);
+                }
+            } catch (const Error& e) {
+                throw Error(p.context() + ": " + e.what());
+            }
+            if (intensity == 1.0f) return map;
+            return std::make_shared<ScaledTexture>(map, intensity);
+        },
+        "environment cube map by lookup.direction, OpenGL face convention, seamless bilinear filtering. "
+        "px nx py ny pz nz: six face files, or cross: one horizontal-cross file (4N x 3N), or folder: a folder "
+        "with px.<extension> ... (extension default jpg); encoding: srgb | linear (default srgb); "
+        "intensity >= 0 (default 1)");
+}
+
+}  // namespace detail
+}  // namespace rtlab

@@ -1,0 +1,113 @@
+// Texture "image": an image file looked up by uv.
+//
+// Files: PNG, JPG, BMP, TGA (8-bit, decoded from sRGB to linear unless encoding = "linear"), Radiance HDR
+// and PFM (linear floats), all through rtlab::read_image. uv' = uv * scale + offset; u runs to the right
+// and v up, so v' = 0 is the bottom row of the file and v' = 1 its top. Texel centres sit at
+// ((x + 0.5) / W, 1 - (y + 0.5) / H); bilinear filtering blends the four centres around uv', and the
+// wrap mode decides which texels lie beyond the edges: repeat (tile), clamp (edge texels extend) or
+// mirror (tile, every other copy flipped). A missing or undecodable file is an error naming the file.
+//
+// Parameters
+//   filename   the image file (required)
+//   wrap       repeat | clamp | mirror                          default repeat
+//   filter     bilinear | nearest                               default bilinear
+//   scale      uv multiplier, one number or [su, sv]            default 1
+//   offset     added after scaling, one number or [ou, ov]      default 0
+//   encoding   srgb | linear: how 8-bit files are decoded       default srgb
+#include <rtlab/core/error.hpp>
+#include <rtlab/textures/image_texture.hpp>
+
+#include "texture_params.hpp"
+
+#include <cmath>
+
+namespace rtlab {
+
+WrapMode parse_wrap_mode(std::string_view name) {
+    if (name == "repeat") return WrapMode::repeat;
+    if (name == "clamp") return WrapMode::clamp;
+    if (name == "mirror") return WrapMode::mirror;
+    throw Error("unknown wrap mode '" + std::string(name) + "' (use repeat, clamp or mirror)");
+}
+
+ImageTexture::ImageTexture(std::shared_ptr<const Image> image, const ImageTextureOptions& options)
+    : m_image(std::move(image)), m_options(options) {
+    if (!m_image || m_image->empty()) throw Error("image texture: the image is empty");
+}
+
+std::shared_ptr<ImageTexture> ImageTexture::load(const std::filesystem::path& path, const ImageTextureOptions& options,
+                                                 ColorEncoding encoding) {
+    return std::make_shared<ImageTexture>(std::make_shared<const Image>(read_image(path, encoding)), options);
+}
+
+namespace {
+// Wraps an integral texel index (a double, so that no size of uv can overflow) into [0, n).
+int wrap_index(double i, int n, WrapMode mode) {
+    const double nd = n;
+    switch (mode) {
+        case WrapMode::clamp:
+            return static_cast<int>(std::clamp(i, 0.0, nd - 1.0));
+        case WrapMode::repeat: {
+            double m = std::fmod(i, nd);  // exact
+            if (m < 0.0) m += nd;
+            return static_cast<int>(m);
+        }
+        case WrapMode::mirror: {
+            double m = std::fmod(i, 2.0 * nd);
+            if (m < 0.0) m += 2.0 * nd;
+            return static_cast<int>(m < nd ? m : 2.0 * nd - 1.0 - m);
+        }
+    }
+    return 0;
+}
+}  // namespace
+
+const RGB& ImageTexture::texel(double x, double y) const {
+    const Image& img = *m_image;
+    return img.at(wrap_index(x, img.width(), m_options.wrap), wrap_index(y, img.height(), m_options.wrap));
+}
+
+RGB ImageTexture::sample(Vec2 uv) const {
+    const double u = static_cast<double>(uv.x) * m_options.scale.x + m_options.offset.x;
+    const double v = static_cast<double>(uv.y) * m_options.scale.y + m_options.offset.y;
+    if (!std::isfinite(u) || !std::isfinite(v)) return {};
+    const Image& img = *m_image;
+    // Continuous texel coordinates, row 0 at the top: texel centres at integers.
+    const double x = u * img.width() - 0.5;
+    const double y = (1.0 - v) * img.height() - 0.5;
+    if (m_options.filter == ImageFilter::nearest) return texel(std::floor(x + 0.5), std::floor(y + 0.5));
+    const double x0 = std::floor(x), y0 = std::floor(y);
+    const auto fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+    const RGB top = lerp(texel(x0, y0), texel(x0 + 1.0, y0), fx);
+    const RGB bottom = lerp(texel(x0, y0 + 1.0), texel(x0 + 1.0, y0 + 1.0), fx);
+    return lerp(top, bottom, fy);
+}
+
+namespace detail {
+
+void register_image(TextureRegistry& registry) {
+    registry.add(
+        "image",
+        [](const Params& p) -> std::shared_ptr<Texture> {
+            const std::string filename = p.get_string("filename");
+            ImageTextureOptions o;
+            o.wrap = parse_wrap_mode(one_of(p, "wrap", "repeat", {"repeat", "clamp", "mirror"}));
+            o.filter = one_of(p, "filter", "bilinear", {"bilinear", "nearest"}) == "bilinear" ? ImageFilter::bilinear
+                                                                                              : ImageFilter::nearest;
+            o.scale = get_vec2(p, "scale", Vec2(1.0f));
+            o.offset = get_vec2(p, "offset", Vec2(0.0f));
+            const ColorEncoding encoding = get_encoding(p);
+            try {
+                return ImageTexture::load(filename, o, encoding);
+            } catch (const Error& e) {
+                throw Error(p.context() + ": " + e.what());
+            }
+        },
+        "image file by uv (v up: v = 0 is the bottom row), bilinear filtering. filename (required); "
+        "wrap: repeat | clamp | mirror (default repeat); filter: bilinear | nearest (default bilinear); "
+        "scale: [su, sv] or one number (default 1); offset: [ou, ov] (default 0); "
+        "encoding: srgb | linear for 8-bit files (default srgb)");
+}
+
+}  // namespace detail
+}  // namespace rtlab

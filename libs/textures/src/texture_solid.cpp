@@ -1,0 +1,31 @@
+// Texture "solid": one colour everywhere.
+//
+// Parameters
+//   color   colour (one number or [r, g, b], linear)   default 1 (white)
+#include "texture_params.hpp"
+
+namespace rtlab::detail {
+
+namespace {
+class SolidTexture final : public Texture {
+public:
+    explicit SolidTexture(const RGB& colour) : m_colour(colour) {}
+    RGB eval(const TextureLookup&) const override { return m_colour; }
+
+private:
+    RGB m_colour;
+};
+}  // namespace
+
+std::shared_ptr<const Texture> make_constant(const RGB& colour) { return std::make_shared<SolidTexture>(colour); }
+
+void register_solid(TextureRegistry& registry) {
+    registry.add(
+        "solid",
+        [](const Params& p) -> std::shared_ptr<Texture> {
+            return std::make_shared<SolidTexture>(finite_rgb(p, "color", RGB(1.0f)));
+        },
+        "one colour everywhere. color: colour (default 1)");
+}
+
+}  // namespace rtlab::detail
