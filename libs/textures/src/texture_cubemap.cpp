@@ -178,21 +178,21 @@ void register_cubemap(TextureRegistry& registry) {
             if (p.has("extension") && !p.has("folder")) fail_param(p, "extension", "is only used with 'folder'");
             const ColorEncoding encoding = get_encoding(p);
             const float intensity = positive_float(p, "intensity", 1.0f, true);
+            std::array<std::filesystem::path, 6> paths;
+            if (!p.has("cross")) {
+                const bool use_folder = p.has("folder");
+                const std::string folder = use_folder ? p.get_string("folder") : "";
+                const std::string ext = p.get_string("extension", "jpg");
+                for (int f = 0; f < 6; ++f) {
+                    if (use_folder) paths[f] = std::filesystem::path(folder) / (std::string(kFaceNames[f]) + "." + ext);
+                    else if (p.has(kFaceNames[f])) paths[f] = p.get_string(kFaceNames[f]);
+                    else fail_param(p, kFaceNames[f], "is missing: all six faces are needed");
+                }
+            }
             std::shared_ptr<CubeMapTexture> map;
             try {
-                if (p.has("cross")) {
-                    map = CubeMapTexture::load_cross(p.get_string("cross"), encoding);
-                } else {
-                    std::array<std::filesystem::path, 6> paths;
-                    const std::string folder = p.has("folder") ? p.get_string("folder") : "";
-                    const std::string ext = p.get_string("extension", "jpg");
-                    for (int f = 0; f < 6; ++f) {
-                        if (!folder.empty()) paths[f] = std::filesystem::path(folder) / (std::string(kFaceNames[f]) + "." + ext);
-                        else if (p.has(kFaceNames[f])) paths[f] = p.get_string(kFaceNames[f]);
-                        else fail_param(p, kFaceNames[f], "is missing: all six faces are needed");
-                    }
-                    map = CubeMapTexture::load_faces(paths, encoding);
-                }
+                map = p.has("cross") ? CubeMapTexture::load_cross(p.get_string("cross"), encoding)
+                                     : CubeMapTexture::load_faces(paths, encoding);
             } catch (const Error& e) {
                 throw Error(p.context() + ": " + e.what());
             }
