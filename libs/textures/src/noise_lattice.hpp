@@ -16,14 +16,25 @@ struct LatticeSplit {
 /// A lattice index reduced mod 256, from an integral double of any size (never converting an
 /// out-of-range double to an integer, which would be undefined).
 inline int cell_mod_256(double integral) {
-    double m = std::fmod(integral, 256.0);  // exact; negative for negative input
+    // The common case in integers (two's complement & 255 is the mod for negatives too); fmod, exact
+    // but slow, only where a conversion to int64 could overflow.
+    if (std::abs(integral) < 0x1p62) return static_cast<int>(static_cast<std::int64_t>(integral) & 255);
+    double m = std::fmod(integral, 256.0);
     if (m < 0.0) m += 256.0;
     return static_cast<int>(m) & 255;
 }
 
+/// floor(x) without a libm call (the x86-64 baseline has no rounding instruction); |x| >= 2^62 is
+/// already integral in double, so it is returned as it is. x must not be NaN.
+inline double fast_floor(double x) {
+    if (!(std::abs(x) < 0x1p62)) return x;
+    const double t = static_cast<double>(static_cast<std::int64_t>(x));  // truncates toward zero, exact
+    return t > x ? t - 1.0 : t;
+}
+
 /// x - floor(x) is exact in double, so the fraction is as accurate as the input however far out it is.
 inline LatticeSplit split_lattice(double x) {
-    const double fl = std::floor(x);
+    const double fl = fast_floor(x);
     return {cell_mod_256(fl), static_cast<float>(x - fl)};
 }
 

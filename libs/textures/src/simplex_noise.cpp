@@ -42,7 +42,7 @@ SimplexNoise::SimplexNoise(std::uint64_t seed) : m_perm(detail::make_permutation
 float SimplexNoise::eval(double x, double y) const {
     if (!std::isfinite(x) || !std::isfinite(y)) return 0.0f;
     const double s = (x + y) * kF2;
-    const double fi = std::floor(x + s), fj = std::floor(y + s);
+    const double fi = detail::fast_floor(x + s), fj = detail::fast_floor(y + s);
     const double t = (fi + fj) * kG2;
     // Offsets from the cell origin, unskewed; in double so they stay exact far from the origin.
     const auto x0 = static_cast<float>((x - fi) + t), y0 = static_cast<float>((y - fj) + t);
@@ -60,7 +60,7 @@ float SimplexNoise::eval(double x, double y) const {
 float SimplexNoise::eval(double x, double y, double z) const {
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return 0.0f;
     const double s = (x + y + z) * kF3;
-    const double fi = std::floor(x + s), fj = std::floor(y + s), fk = std::floor(z + s);
+    const double fi = detail::fast_floor(x + s), fj = detail::fast_floor(y + s), fk = detail::fast_floor(z + s);
     const double t = (fi + fj + fk) * kG3;
     const auto x0 = static_cast<float>((x - fi) + t), y0 = static_cast<float>((y - fj) + t),
                z0 = static_cast<float>((z - fk) + t);

@@ -19,7 +19,9 @@
 
 #include "texture_params.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace rtlab {
 
@@ -41,28 +43,35 @@ std::shared_ptr<ImageTexture> ImageTexture::load(const std::filesystem::path& pa
 }
 
 namespace {
-// Wraps an integral texel index (a double, so that no size of uv can overflow) into [0, n).
-int wrap_index(double i, int n, WrapMode mode) {
-    const double nd = n;
+// Wraps an integral texel index into [0, n).
+int wrap_index(std::int64_t i, int n, WrapMode mode) {
     switch (mode) {
         case WrapMode::clamp:
-            return static_cast<int>(std::clamp(i, 0.0, nd - 1.0));
+            return static_cast<int>(std::clamp<std::int64_t>(i, 0, n - 1));
         case WrapMode::repeat: {
-            double m = std::fmod(i, nd);  // exact
-            if (m < 0.0) m += nd;
-            return static_cast<int>(m);
+            const std::int64_t m = i % n;
+            return static_cast<int>(m < 0 ? m + n : m);
         }
         case WrapMode::mirror: {
-            double m = std::fmod(i, 2.0 * nd);
-            if (m < 0.0) m += 2.0 * nd;
-            return static_cast<int>(m < nd ? m : 2.0 * nd - 1.0 - m);
+            const std::int64_t period = 2 * static_cast<std::int64_t>(n);
+            std::int64_t m = i % period;
+            if (m < 0) m += period;
+            return static_cast<int>(m < n ? m : period - 1 - m);
         }
     }
     return 0;
 }
+
+// Brings a floored texel coordinate into int64 range without changing what it wraps to: fmod by 2n
+// (exact) keeps both the repeat period n and the mirror period 2n; clamp only needs [-1, n].
+std::int64_t reduce(double i, int n, WrapMode mode) {
+    if (std::abs(i) < 0x1p40) return static_cast<std::int64_t>(i);
+    if (mode == WrapMode::clamp) return i < 0.0 ? -1 : n;
+    return static_cast<std::int64_t>(std::fmod(i, 2.0 * n));
+}
 }  // namespace
 
-const RGB& ImageTexture::texel(double x, double y) const {
+const RGB& ImageTexture::texel(std::int64_t x, std::int64_t y) const {
     const Image& img = *m_image;
     return img.at(wrap_index(x, img.width(), m_options.wrap), wrap_index(y, img.height(), m_options.wrap));
 }
@@ -75,11 +84,16 @@ RGB ImageTexture::sample(Vec2 uv) const {
     // Continuous texel coordinates, row 0 at the top: texel centres at integers.
     const double x = u * img.width() - 0.5;
     const double y = (1.0 - v) * img.height() - 0.5;
-    if (m_options.filter == ImageFilter::nearest) return texel(std::floor(x + 0.5), std::floor(y + 0.5));
-    const double x0 = std::floor(x), y0 = std::floor(y);
-    const auto fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
-    const RGB top = lerp(texel(x0, y0), texel(x0 + 1.0, y0), fx);
-    const RGB bottom = lerp(texel(x0, y0 + 1.0), texel(x0 + 1.0, y0 + 1.0), fx);
+    const WrapMode wrap = m_options.wrap;
+    if (m_options.filter == ImageFilter::nearest)
+        return texel(reduce(std::floor(x + 0.5), img.width(), wrap), reduce(std::floor(y + 0.5), img.height(), wrap));
+    const double xf = std::floor(x), yf = std::floor(y);
+    const auto fx = static_cast<float>(x - xf), fy = static_cast<float>(y - yf);
+    const std::int64_t x0 = reduce(xf, img.width(), wrap), y0 = reduce(yf, img.height(), wrap);
+    const int c0 = wrap_index(x0, img.width(), wrap), c1 = wrap_index(x0 + 1, img.width(), wrap);
+    const int r0 = wrap_index(y0, img.height(), wrap), r1 = wrap_index(y0 + 1, img.height(), wrap);
+    const RGB top = lerp(img.at(c0, r0), img.at(c1, r0), fx);
+    const RGB bottom = lerp(img.at(c0, r1), img.at(c1, r1), fx);
     return lerp(top, bottom, fy);
 }
 

@@ -3,6 +3,7 @@
 #include <rtlab/core/image.hpp>
 #include <rtlab/textures/texture.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string_view>
@@ -39,7 +40,7 @@ public:
     const Image& image() const { return *m_image; }
 
 private:
-    const RGB& texel(double x, double y) const;  // integral texel coordinates, wrapped here
+    const RGB& texel(std::int64_t x, std::int64_t y) const;  // texel indices, wrapped here
 
     std::shared_ptr<const Image> m_image;
     ImageTextureOptions m_options;
