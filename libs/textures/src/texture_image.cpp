@@ -45,6 +45,7 @@ std::shared_ptr<ImageTexture> ImageTexture::load(const std::filesystem::path& pa
 namespace {
 // Wraps an integral texel index into [0, n).
 int wrap_index(std::int64_t i, int n, WrapMode mode) {
+    if (i >= 0 && i < n) return static_cast<int>(i);  // inside: the same for every mode, and no division
     switch (mode) {
         case WrapMode::clamp:
             return static_cast<int>(std::clamp<std::int64_t>(i, 0, n - 1));
