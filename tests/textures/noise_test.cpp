@@ -239,6 +239,11 @@ TEST_CASE("noise textures map patterns to colours in 2D and 3D", "[noise]") {
     CHECK(t2->eval(q1) != t2->eval(q3));
     CHECK(t3->eval(q1) == t3->eval(q3));
     CHECK(t3->eval(q1) != t3->eval(q2));
+    // A non-finite point gives color1 (t = 0) for every pattern, not NaN.
+    for (const char* pattern : {"noise", "fbm", "turbulence", "marble"}) {
+        const auto t = r.create("perlin", Params{}.set("pattern", std::string(pattern)).set("color1", 0.25));
+        CHECK(t->eval(TextureLookup{{}, {std::nanf(""), 1.0f, 2.0f}, {}}) == RGB(0.25f));
+    }
     // Plain noise: t = 0.5 + 0.5 n, so at an integer point (n = 0) the colour is the mid blend.
     const auto mid = r.create("perlin", Params{}.set("dimension", 3.0));
     CHECK(mid->eval(TextureLookup{{}, {2.0f, -3.0f, 5.0f}, {}}) == RGB(0.5f));

@@ -5,6 +5,7 @@
 
 #include "texture_params.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -37,6 +38,9 @@ public:
     /// The pattern value t in [0, 1] before colouring.
     float pattern(const TextureLookup& q) const {
         const double s = m_s.scale;
+        // A non-finite point gives t = 0 (color1) for every pattern.
+        const bool finite = m_s.dimension == 2 ? std::isfinite(q.uv.x) && std::isfinite(q.uv.y) : is_finite(q.point);
+        if (!finite) return 0.0f;
         if (m_s.dimension == 2)
             return shade(q.uv.x * s, [&](auto&& f) { return f(q.uv.x * s, q.uv.y * s); });
         return shade(q.point.x * s, [&](auto&& f) { return f(q.point.x * s, q.point.y * s, q.point.z * s); });
@@ -67,7 +71,7 @@ private:
                 break;
             }
         }
-        return std::clamp(t, 0.0f, 1.0f);
+        return std::isfinite(t) ? std::clamp(t, 0.0f, 1.0f) : 0.0f;
     }
 
     NoiseSettings m_s;

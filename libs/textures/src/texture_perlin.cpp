@@ -5,7 +5,8 @@
 //   pattern "fbm"         t = 0.5 + 0.5 sum_k gain^k n(lacunarity^k p) / sum_k gain^k
 //   pattern "turbulence"  t = sum_k gain^k |n(lacunarity^k p)| / sum_k gain^k
 //   pattern "marble"      t = 0.5 + 0.5 sin(2 pi stripes p.x + distortion turbulence(p))
-// where p = scale * uv (dimension 2) or scale * lookup.point (dimension 3, object space).
+// where p = scale * uv (dimension 2) or scale * lookup.point (dimension 3, object space). A non-finite
+// p gives t = 0.
 //
 // Parameters
 //   dimension    2 (uv) or 3 (object-space point)         default 3
