@@ -1,0 +1,109 @@
+#pragma once
+/// \brief kd-trees: generic over any primitive source, over shapes (a tree of trees), and over meshes.
+#include <rtlab/accel/accelerator.hpp>
+#include <rtlab/accel/kd_build.hpp>
+#include <rtlab/accel/kd_traverse.hpp>
+#include <rtlab/geometry/shape.hpp>
+
+#include <concepts>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rtlab {
+
+/// \brief What a kd-tree can index: a count, bounds of primitive i, closest-hit and any-hit tests of
+/// primitive i. `Hit` has a member `t`; intersect(i, ray, hit) accepts only tmin < t < ray.tmax and
+/// fills hit. Optionally clipped_bounds(i, box) gives the bounds of the part inside box (perfect splits).
+template <class S>
+concept KdPrimitiveSource = requires(const S& s, std::uint32_t i, const Ray& ray, typename S::Hit& hit) {
+    { s.size() } -> std::convertible_to<std::size_t>;
+    { s.bounds(i) } -> std::convertible_to<AABB>;
+    { s.intersect(i, ray, hit) } -> std::same_as<bool>;
+    { s.occluded(i, ray) } -> std::same_as<bool>;
+    { hit.t } -> std::convertible_to<float>;
+};
+
+template <class S>
+concept KdClippableSource = requires(const S& s, std::uint32_t i, const AABB& box) {
+    { s.clipped_bounds(i, box) } -> std::convertible_to<AABB>;
+};
+
+/// \brief A kd-tree over any primitive source.
+template <KdPrimitiveSource Source>
+class KdTree {
+public:
+    using Hit = typename Source::Hit;
+
+    KdTree(Source source, KdStrategy strategy, const KdCostModel& cost = {}, int threads = 0)
+        : m_source(std::move(source)) {
+        KdBuildInput input;
+        input.bounds.reserve(m_source.size());
+        for (std::size_t i = 0; i < m_source.size(); ++i) input.bounds.push_back(m_source.bounds(static_cast<std::uint32_t>(i)));
+        if constexpr (KdClippableSource<Source>)
+            input.clip = [this](std::uint32_t i, const AABB& box) { return m_source.clipped_bounds(i, box); };
+        m_tree = build_kd_tree(input, strategy, cost, threads);
+    }
+
+    /// Closest hit with ray.tmin < t < ray.tmax; fills hit and returns true on a hit.
+    bool intersect(const Ray& ray, Hit& hit) const {
+        return kd_traverse<false>(m_tree, ray, [&](std::uint32_t i, float& closest) {
+            Ray clipped = ray;
+            clipped.tmax = closest;
+            if (!m_source.intersect(i, clipped, hit)) return false;
+            closest = hit.t;
+            return true;
+        });
+    }
+    bool occluded(const Ray& ray) const {
+        return kd_traverse<true>(m_tree, ray, [&](std::uint32_t i, float& closest) {
+            Ray clipped = ray;
+            clipped.tmax = closest;
+            return m_source.occluded(i, clipped);
+        });
+    }
+
+    const KdTreeData& data() const { return m_tree; }
+    const Source& source() const { return m_source; }
+
+private:
+    Source m_source;
+    KdTreeData m_tree;
+};
+
+/// \brief Shapes of any kind as kd-tree primitives.
+struct ShapeSource {
+    using Hit = SurfaceHit;
+    std::vector<std::shared_ptr<const Shape>> shapes;
+
+    std::size_t size() const { return shapes.size(); }
+    AABB bounds(std::uint32_t i) const { return shapes[i]->bounds(); }
+    bool intersect(std::uint32_t i, const Ray& ray, SurfaceHit& hit) const { return shapes[i]->intersect(ray, hit); }
+    bool occluded(std::uint32_t i, const Ray& ray) const { return shapes[i]->occluded(ray); }
+};
+
+/// \brief A kd-tree over shapes that is itself a Shape: a scene's objects, or a tree of mesh trees.
+class KdShapeTree final : public Shape {
+public:
+    explicit KdShapeTree(std::vector<std::shared_ptr<const Shape>> shapes, KdStrategy strategy = KdStrategy::sah)
+        : m_tree(ShapeSource{std::move(shapes)}, strategy) {}
+
+    AABB bounds() const override { return m_tree.data().bounds; }
+    bool intersect(const Ray& ray, SurfaceHit& hit) const override { return m_tree.intersect(ray, hit); }
+    bool occluded(const Ray& ray) const override { return m_tree.occluded(ray); }
+    const KdTreeData& data() const { return m_tree.data(); }
+
+private:
+    KdTree<ShapeSource> m_tree;
+};
+
+/// The kd-tree methods make_kd_tree knows: kd-sah, kd-sah-binned, kd-sah-naive, kd-median, kd-midpoint.
+std::vector<std::string> kd_tree_methods();
+
+/// A kd-tree over a mesh's triangles with a leaf layout precomputed for options.triangle_test.
+/// Degenerate triangles are left out (they are never hit).
+std::unique_ptr<TriangleAccelerator> make_kd_tree(std::string_view method, const TriangleMesh& mesh,
+                                                  const BuildOptions& options = {});
+
+}  // namespace rtlab

@@ -1,0 +1,119 @@
+// Embree 3 as a reference backend (libembree-dev, optional). Debian's libembree3 is built with
+// assertions, so rays Embree would reject (NaN or infinite components, a zero direction,
+// tmin > tmax, huge coordinates) are answered here as misses and never handed over.
+#include "baselines.hpp"
+
+#ifdef RTLAB_HAVE_EMBREE
+#include <rtlab/core/error.hpp>
+
+#include <embree3/rtcore.h>
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+namespace rtlab::accel {
+
+namespace {
+
+class EmbreeAccelerator final : public TriangleAccelerator {
+public:
+    EmbreeAccelerator(const TriangleMesh& mesh, const BuildOptions& options) {
+        const std::string config = options.threads > 0 ? "threads=" + std::to_string(options.threads) : "";
+        m_device = rtcNewDevice(config.empty() ? nullptr : config.c_str());
+        if (!m_device) throw Error("embree: cannot create a device");
+        const auto start = std::chrono::steady_clock::now();
+        m_scene = rtcNewScene(m_device);
+        rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
+        RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                     3 * sizeof(float), mesh.vertex_count()));
+        for (std::size_t i = 0; i < mesh.vertex_count(); ++i)
+            for (int k = 0; k < 3; ++k) vertices[3 * i + k] = mesh.positions[i][k];
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                       3 * sizeof(unsigned), mesh.triangle_count()));
+        for (std::size_t i = 0; i < mesh.triangle_count(); ++i)
+            for (int k = 0; k < 3; ++k) indices[3 * i + k] = mesh.triangles[i][k];
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometry(m_scene, geometry);
+        rtcReleaseGeometry(geometry);
+        rtcCommitScene(m_scene);
+        m_stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    ~EmbreeAccelerator() override {
+        if (m_scene) rtcReleaseScene(m_scene);
+        if (m_device) rtcReleaseDevice(m_device);
+    }
+    EmbreeAccelerator(const EmbreeAccelerator&) = delete;
+    EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
+
+    std::string_view name() const override { return "embree"; }
+
+    bool intersect(const Ray& ray, MeshHit& hit) const override {
+        if (!acceptable(ray)) return false;
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRayHit rh{};
+        fill(ray, rh.ray);
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(m_scene, &context, &rh);
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || !(rh.ray.tfar > ray.tmin && rh.ray.tfar < ray.tmax)) return false;
+        hit = MeshHit{rh.ray.tfar, rh.hit.primID, rh.hit.u, rh.hit.v};
+        return true;
+    }
+
+    bool occluded(const Ray& ray) const override {
+        if (!acceptable(ray)) return false;
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRay r{};
+        fill(ray, r);
+        rtcOccluded1(m_scene, &context, &r);
+        return r.tfar == -std::numeric_limits<float>::infinity();
+    }
+
+    AccelStats stats() const override { return m_stats; }
+
+private:
+    static bool acceptable(const Ray& ray) {
+        constexpr float kLarge = 1e18f;  // Embree's FLT_LARGE is 1.844e18
+        for (int a = 0; a < 3; ++a)
+            if (!(std::abs(ray.origin[a]) <= kLarge) || !(std::abs(ray.direction[a]) <= kLarge)) return false;
+        if (ray.direction == Vec3(0.0f)) return false;
+        return ray.tmax > std::max(ray.tmin, 0.0f);
+    }
+    static void fill(const Ray& ray, RTCRay& r) {
+        r.org_x = ray.origin.x;
+        r.org_y = ray.origin.y;
+        r.org_z = ray.origin.z;
+        r.dir_x = ray.direction.x;
+        r.dir_y = ray.direction.y;
+        r.dir_z = ray.direction.z;
+        r.tnear = std::max(ray.tmin, 0.0f);
+        r.tfar = ray.tmax;
+        r.mask = 0xFFFFFFFFu;
+        r.time = 0.0f;
+        r.flags = 0;
+    }
+
+    RTCDevice m_device = nullptr;
+    RTCScene m_scene = nullptr;
+    AccelStats m_stats;
+};
+
+}  // namespace
+
+std::unique_ptr<TriangleAccelerator> make_embree(const TriangleMesh& mesh, const BuildOptions& options) {
+    return std::make_unique<EmbreeAccelerator>(mesh, options);
+}
+
+}  // namespace rtlab::accel
+
+#else
+
+namespace rtlab::accel {
+std::unique_ptr<TriangleAccelerator> make_embree(const TriangleMesh&, const BuildOptions&) { return nullptr; }
+}  // namespace rtlab::accel
+
+#endif

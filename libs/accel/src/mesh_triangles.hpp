@@ -1,0 +1,93 @@
+#pragma once
+// A mesh's triangles laid out for one triangle test, and the per-triangle test every accelerator's
+// leaves call (private to the accel library).
+#include <rtlab/accel/accelerator.hpp>
+#include <rtlab/geometry/triangle_intersect.hpp>
+#include <rtlab/geometry/triangle_mesh.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace rtlab::accel {
+
+/// \brief Corners (watertight, moller) or plane data (plane), indexed by triangle; degenerate triangles
+/// are marked unusable and never tested.
+class MeshTriangles {
+public:
+    MeshTriangles(const TriangleMesh& mesh, TriangleTest test) : m_test(test) {
+        const std::size_t n = mesh.triangle_count();
+        m_usable.resize(n);
+        if (test == TriangleTest::plane) m_planes.resize(n);
+        else m_corners.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            m_usable[i] = !mesh.is_degenerate(i);
+            if (test == TriangleTest::plane) m_planes[i] = PlaneTriangle(mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2));
+            else m_corners[i] = {mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2)};
+        }
+    }
+
+    TriangleTest test() const { return m_test; }
+    std::size_t size() const { return m_usable.size(); }
+    bool usable(std::size_t i) const { return m_usable[i] != 0; }
+    std::size_t bytes() const {
+        return m_corners.size() * sizeof(m_corners[0]) + m_planes.size() * sizeof(PlaneTriangle) + m_usable.size();
+    }
+    const std::array<Point3, 3>& corners(std::uint32_t i) const { return m_corners[i]; }
+    const PlaneTriangle& plane(std::uint32_t i) const { return m_planes[i]; }
+
+private:
+    TriangleTest m_test;
+    std::vector<std::array<Point3, 3>> m_corners;
+    std::vector<PlaneTriangle> m_planes;
+    std::vector<std::uint8_t> m_usable;
+};
+
+/// \brief Per-ray data of a triangle test: the watertight shear, or nothing.
+template <TriangleTest Test>
+struct TriangleRay {
+    const Ray& ray;
+    explicit TriangleRay(const Ray& r) : ray(r) {}
+};
+template <>
+struct TriangleRay<TriangleTest::watertight> {
+    const Ray& ray;
+    WatertightRay sheared;
+    explicit TriangleRay(const Ray& r) : ray(r), sheared(r) {}
+};
+
+/// Tests triangle i for tmin < t < closest; on a hit fills hit and lowers closest.
+template <TriangleTest Test>
+inline bool test_triangle(const MeshTriangles& tris, const TriangleRay<Test>& r, std::uint32_t i, float& closest,
+                          MeshHit& hit) {
+    std::optional<TriangleHit> h;
+    if constexpr (Test == TriangleTest::watertight) {
+        const auto& c = tris.corners(i);
+        h = intersect_watertight(r.sheared, r.ray.tmin, closest, c[0], c[1], c[2]);
+    } else if constexpr (Test == TriangleTest::moller) {
+        const auto& c = tris.corners(i);
+        h = intersect_moller(r.ray, r.ray.tmin, closest, c[0], c[1], c[2]);
+    } else {
+        h = intersect_plane(r.ray, r.ray.tmin, closest, tris.plane(i));
+    }
+    if (!h) return false;
+    closest = h->t;
+    hit = MeshHit{h->t, i, h->u, h->v};
+    return true;
+}
+
+/// Calls f.template operator()<Test>() for the runtime test: one switch per query, not per triangle.
+template <class F>
+decltype(auto) dispatch_triangle_test(TriangleTest test, F&& f) {
+    switch (test) {
+        case TriangleTest::moller: return f.template operator()<TriangleTest::moller>();
+        case TriangleTest::plane: return f.template operator()<TriangleTest::plane>();
+        case TriangleTest::watertight: break;
+    }
+    return f.template operator()<TriangleTest::watertight>();
+}
+
+/// Bounds of the part of triangle (a, b, c) inside box (Sutherland-Hodgman clipping), empty if none.
+AABB clip_triangle(const Point3& a, const Point3& b, const Point3& c, const AABB& box);
+
+}  // namespace rtlab::accel

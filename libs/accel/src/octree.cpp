@@ -1,0 +1,143 @@
+// Octree: each node split into eight equal children, a leaf at <= 10 primitives or depth 10; children
+// visited in order of where the ray enters them.
+#include "baselines.hpp"
+#include "mesh_triangles.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+
+namespace rtlab::accel {
+
+namespace {
+
+constexpr std::size_t kLeafSize = 10;
+constexpr int kMaxDepth = 10;
+
+struct OctNode {
+    AABB box;
+    std::uint32_t first;  // interior: first of 8 consecutive children; leaf: offset into m_prims
+    std::uint32_t count;  // leaf primitive count; kInterior for interior nodes
+};
+constexpr std::uint32_t kInterior = 0xFFFFFFFFu;
+
+class Octree final : public TriangleAccelerator {
+public:
+    Octree(const TriangleMesh& mesh, const BuildOptions& options) : m_triangles(mesh, options.triangle_test) {
+        const auto start = std::chrono::steady_clock::now();
+        std::vector<std::uint32_t> all;
+        AABB box;
+        for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {
+            if (!m_triangles.usable(i)) continue;
+            all.push_back(static_cast<std::uint32_t>(i));
+            box.expand(mesh.triangle_bounds(i));
+        }
+        m_nodes.push_back({box, 0, 0});
+        if (!all.empty()) build(mesh, 0, all, 0);
+        m_stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::int64_t leaves = 0, empty = 0, prims = 0;
+        for (const auto& n : m_nodes)
+            if (n.count != kInterior) ++leaves, empty += n.count == 0, prims += n.count;
+        m_stats.nodes = static_cast<std::int64_t>(m_nodes.size());
+        m_stats.leaves = leaves;
+        m_stats.empty_leaves = empty;
+        m_stats.max_depth = m_depth;
+        m_stats.mean_leaf_primitives = leaves > empty ? static_cast<double>(prims) / static_cast<double>(leaves - empty) : 0.0;
+        m_stats.bytes = static_cast<std::int64_t>(m_nodes.size() * sizeof(OctNode) + m_prims.size() * 4 + m_triangles.bytes());
+    }
+
+    std::string_view name() const override { return "octree"; }
+    bool intersect(const Ray& ray, MeshHit& hit) const override { return traverse<false>(ray, hit); }
+    bool occluded(const Ray& ray) const override {
+        MeshHit ignored;
+        return traverse<true>(ray, ignored);
+    }
+    AccelStats stats() const override { return m_stats; }
+
+private:
+    void build(const TriangleMesh& mesh, std::uint32_t index, const std::vector<std::uint32_t>& prims, int depth) {
+        m_depth = std::max<std::int64_t>(m_depth, depth);
+        if (prims.size() <= kLeafSize || depth >= kMaxDepth) {
+            m_nodes[index].first = static_cast<std::uint32_t>(m_prims.size());
+            m_nodes[index].count = static_cast<std::uint32_t>(prims.size());
+            m_prims.insert(m_prims.end(), prims.begin(), prims.end());
+            return;
+        }
+        const AABB box = m_nodes[index].box;
+        const Point3 mid = box.center();
+        const auto first = static_cast<std::uint32_t>(m_nodes.size());
+        m_nodes[index].first = first;
+        m_nodes[index].count = kInterior;
+        for (int c = 0; c < 8; ++c) {
+            AABB child;
+            for (int a = 0; a < 3; ++a) {
+                const bool upper = (c >> a) & 1;
+                child.lo[a] = upper ? mid[a] : box.lo[a];
+                child.hi[a] = upper ? box.hi[a] : mid[a];
+            }
+            m_nodes.push_back({child, 0, 0});
+        }
+        for (int c = 0; c < 8; ++c) {
+            const AABB child = m_nodes[first + c].box;
+            std::vector<std::uint32_t> inside;
+            for (std::uint32_t p : prims)
+                if (!clip_triangle(mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2), child).is_empty()) inside.push_back(p);
+            build(mesh, first + static_cast<std::uint32_t>(c), inside, depth + 1);
+        }
+    }
+
+    template <bool AnyHit>
+    bool traverse(const Ray& ray, MeshHit& hit) const {
+        return dispatch_triangle_test(m_triangles.test(), [&]<TriangleTest Test>() {
+            const TriangleRay<Test> r(ray);
+            float closest = ray.tmax;
+            bool any = false;
+            struct Entry {
+                std::uint32_t node;
+                float tmin;
+            };
+            Entry stack[8 * (kMaxDepth + 1)];
+            int top = 0;
+            if (const auto root = m_nodes[0].box.intersect(ray)) stack[top++] = {0, root->min};
+            while (top > 0) {
+                const Entry e = stack[--top];
+                if (!AnyHit && e.tmin > closest) continue;
+                const OctNode& node = m_nodes[e.node];
+                if (node.count != kInterior) {
+                    for (std::uint32_t k = 0; k < node.count; ++k) {
+                        if (test_triangle<Test>(m_triangles, r, m_prims[node.first + k], closest, hit)) {
+                            any = true;
+                            if constexpr (AnyHit) return true;
+                        }
+                    }
+                    continue;
+                }
+                // Push the children the ray enters, farthest first, so the nearest is popped next.
+                std::array<Entry, 8> children;
+                int n = 0;
+                Ray clipped = ray;
+                clipped.tmax = closest;
+                for (std::uint32_t c = 0; c < 8; ++c)
+                    if (const auto t = m_nodes[node.first + c].box.intersect(clipped)) children[n++] = {node.first + c, t->min};
+                for (int k = 1; k < n; ++k)  // insertion sort, farthest first: at most 8 entries
+                    for (int m = k; m > 0 && children[m - 1].tmin < children[m].tmin; --m) std::swap(children[m - 1], children[m]);
+                for (int k = 0; k < n; ++k) stack[top++] = children[k];
+            }
+            return any;
+        });
+    }
+
+    MeshTriangles m_triangles;
+    std::vector<OctNode> m_nodes;
+    std::vector<std::uint32_t> m_prims;
+    AccelStats m_stats;
+    std::int64_t m_depth = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<TriangleAccelerator> make_octree(const TriangleMesh& mesh, const BuildOptions& options) {
+    return std::make_unique<Octree>(mesh, options);
+}
+
+}  // namespace rtlab::accel

@@ -1,0 +1,138 @@
+#include <rtlab/accel/kd_tree.hpp>
+#include <rtlab/core/error.hpp>
+
+#include <catch2/catch.hpp>
+
+#include "test_meshes.hpp"
+
+#include <cmath>
+
+using namespace rtlab;
+
+namespace {
+
+// Two kinds of shape for the mixed-kind tree: spheres and axis-aligned boxes, each reporting its id.
+struct TestSphere final : Shape {
+    Point3 c;
+    float r;
+    std::uint32_t id;
+    TestSphere(Point3 c_, float r_, std::uint32_t id_) : c(c_), r(r_), id(id_) {}
+    AABB bounds() const override { return {c - Vec3(r), c + Vec3(r)}; }
+    bool intersect(const Ray& ray, SurfaceHit& hit) const override {
+        const Vec3 oc = ray.origin - c;
+        const float a = glm::dot(ray.direction, ray.direction), b = glm::dot(oc, ray.direction);
+        const float disc = b * b - a * (glm::dot(oc, oc) - r * r);
+        if (disc < 0.0f) return false;
+        for (float t : {(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a})
+            if (t > ray.tmin && t < ray.tmax) {
+                hit.t = t;
+                hit.primitive = id;
+                return true;
+            }
+        return false;
+    }
+    bool occluded(const Ray& ray) const override {
+        SurfaceHit h;
+        return intersect(ray, h);
+    }
+};
+struct TestBox final : Shape {
+    AABB box;
+    std::uint32_t id;
+    TestBox(AABB b, std::uint32_t id_) : box(b), id(id_) {}
+    AABB bounds() const override { return box; }
+    bool intersect(const Ray& ray, SurfaceHit& hit) const override {
+        const auto range = box.intersect(ray);
+        if (!range) return false;
+        const float t = range->min > ray.tmin ? range->min : range->max;
+        if (!(t > ray.tmin && t < ray.tmax)) return false;
+        hit.t = t;
+        hit.primitive = id;
+        return true;
+    }
+    bool occluded(const Ray& ray) const override {
+        SurfaceHit h;
+        return intersect(ray, h);
+    }
+};
+
+}  // namespace
+
+TEST_CASE("kd nodes are 8 bytes and pack axis and counts", "[kd]") {
+    STATIC_REQUIRE(sizeof(KdNode) == 8);
+    const KdNode interior = KdNode::interior(2, 1.5f, 12345);
+    CHECK_FALSE(interior.is_leaf());
+    CHECK(interior.axis() == 2);
+    CHECK(interior.split() == 1.5f);
+    CHECK(interior.above_child() == 12345);
+    const KdNode leaf = KdNode::leaf(7, 99);
+    CHECK(leaf.is_leaf());
+    CHECK(leaf.primitive_count() == 7);
+    CHECK(leaf.primitive_offset() == 99);
+}
+
+TEST_CASE("the cost model validates its constants", "[kd]") {
+    CHECK_THROWS_AS(KdCostModel(0.0f, 1.0f, 0.2f), Error);
+    CHECK_THROWS_AS(KdCostModel(1.0f, -1.0f, 0.2f), Error);
+    CHECK_THROWS_AS(KdCostModel(1.0f, 1.0f, 1.0f), Error);
+    const KdCostModel m(1.0f, 2.0f, 0.5f);
+    CHECK(m.leaf_cost(4) == 8.0f);
+    CHECK(m.split_cost(0.5f, 0.5f, 2, 2) == Approx(1.0f + 2.0f * 2.0f));
+    CHECK(m.split_cost(0.5f, 0.5f, 0, 4) == Approx(1.0f + 0.5f * 2.0f * 2.0f));  // empty-space bonus
+}
+
+TEST_CASE("SAH trees stop by cost and are identical with 1 and 2 threads", "[kd]") {
+    const TriangleMesh sphere = test::icosphere(5);  // 20,480 triangles
+    KdBuildInput input;
+    for (std::size_t i = 0; i < sphere.triangle_count(); ++i) input.bounds.push_back(sphere.triangle_bounds(i));
+    for (KdStrategy s : {KdStrategy::sah, KdStrategy::sah_binned, KdStrategy::median, KdStrategy::midpoint}) {
+        const KdTreeData one = build_kd_tree(input, s, {}, 1);
+        const KdTreeData two = build_kd_tree(input, s, {}, 2);
+        INFO(kd_strategy_name(s) << ": nodes " << one.stats.nodes << ", depth " << one.stats.max_depth << ", mean leaf "
+                                 << one.stats.mean_leaf_primitives << ", SAH " << one.stats.sah_cost);
+        CHECK(one.stats.nodes == two.stats.nodes);
+        CHECK(one.primitive_indices == two.primitive_indices);
+        CHECK(one.stats.leaves == (one.stats.nodes + 1) / 2);
+        CHECK(one.stats.max_depth < 40);
+        CHECK(one.stats.mean_leaf_primitives > 0.5);
+        CHECK(one.stats.mean_leaf_primitives < 20.0);
+    }
+    // The full SAH finds trees at least as cheap as its binned approximation (by its own cost model).
+    const KdTreeData sah = build_kd_tree(input, KdStrategy::sah);
+    const KdTreeData binned = build_kd_tree(input, KdStrategy::sah_binned);
+    const KdTreeData median = build_kd_tree(input, KdStrategy::median);
+    CHECK(sah.stats.sah_cost <= binned.stats.sah_cost * 1.02);
+    CHECK(sah.stats.sah_cost < median.stats.sah_cost);
+}
+
+TEST_CASE("a kd-tree over shapes of mixed kinds, itself a shape inside another tree", "[kd]") {
+    std::vector<std::shared_ptr<const Shape>> shapes;
+    std::uint32_t id = 0;
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) {
+            const Point3 c(2.0f * i, 2.0f * j, 0.0f);
+            if ((i + j) % 2) shapes.push_back(std::make_shared<TestSphere>(c, 0.7f, id++));
+            else shapes.push_back(std::make_shared<TestBox>(AABB{c - Vec3(0.5f), c + Vec3(0.5f)}, id++));
+        }
+    const auto inner = std::make_shared<KdShapeTree>(shapes);
+    // The tree of trees: the first tree is one primitive of the outer one, beside a far sphere.
+    const KdShapeTree outer({inner, std::make_shared<TestSphere>(Point3(100, 0, 0), 1.0f, 999)});
+    int checked = 0;
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) {
+            const Ray down{{2.0f * i, 2.0f * j, 5.0f}, {0.0f, -0.0f, -1.0f}};
+            SurfaceHit a, b;
+            REQUIRE(inner->intersect(down, a));
+            REQUIRE(outer.intersect(down, b));
+            CHECK(a.primitive == static_cast<std::uint32_t>(i * 6 + j));
+            CHECK(b.primitive == a.primitive);
+            CHECK(a.t == Approx((i + j) % 2 ? 5.0f - 0.7f : 4.5f));
+            CHECK(outer.occluded(down));
+            ++checked;
+        }
+    CHECK(checked == 36);
+    SurfaceHit far;
+    REQUIRE(outer.intersect(Ray{{90, 0, 0}, {1, 0, 0}}, far));
+    CHECK(far.primitive == 999);
+    CHECK_FALSE(outer.occluded(Ray{{2, 1, 5}, {0, 0, -1}}));  // between the shapes
+}
