@@ -5,6 +5,7 @@
 #include <cmath>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace rtlab::test {
 
@@ -21,16 +22,32 @@ struct Agreement {
     int rays = 0, mismatches = 0, anyhit_mismatches = 0, hits = 0;
 };
 
-inline Agreement compare(const TriangleAccelerator& accel, const TriangleAccelerator& reference, std::span<const Ray> rays) {
-    Agreement a;
+struct Answer {
+    bool hit;
+    MeshHit closest;
+};
+
+inline std::vector<Answer> answers(const TriangleAccelerator& accel, std::span<const Ray> rays) {
+    std::vector<Answer> out;
+    out.reserve(rays.size());
     for (const Ray& ray : rays) {
-        MeshHit h1, h2;
-        const bool b1 = accel.intersect(ray, h1);
-        const bool b2 = reference.intersect(ray, h2);
+        Answer a{};
+        a.hit = accel.intersect(ray, a.closest);
+        out.push_back(a);
+    }
+    return out;
+}
+
+/// Compares accel's closest and any-hit answers with the reference answers to the same rays.
+inline Agreement compare(const TriangleAccelerator& accel, const std::vector<Answer>& reference, std::span<const Ray> rays) {
+    Agreement a;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        MeshHit h;
+        const bool b = accel.intersect(rays[i], h);
         ++a.rays;
-        a.hits += b2;
-        if (!same_hit(b1, h1, b2, h2)) ++a.mismatches;
-        if (accel.occluded(ray) != b2) ++a.anyhit_mismatches;
+        a.hits += reference[i].hit;
+        if (!same_hit(b, h, reference[i].hit, reference[i].closest)) ++a.mismatches;
+        if (accel.occluded(rays[i]) != reference[i].hit) ++a.anyhit_mismatches;
     }
     return a;
 }

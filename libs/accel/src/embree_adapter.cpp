@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace rtlab::accel {
@@ -90,8 +91,9 @@ private:
         r.dir_x = ray.direction.x;
         r.dir_y = ray.direction.y;
         r.dir_z = ray.direction.z;
-        r.tnear = std::max(ray.tmin, 0.0f);
-        r.tfar = ray.tmax;
+        // Embree's interval is closed, rtlab's open: move both ends in by one float.
+        r.tnear = std::nextafter(std::max(ray.tmin, 0.0f), std::numeric_limits<float>::infinity());
+        r.tfar = std::nextafter(ray.tmax, -std::numeric_limits<float>::infinity());
         r.mask = 0xFFFFFFFFu;
         r.time = 0.0f;
         r.flags = 0;

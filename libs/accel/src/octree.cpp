@@ -65,25 +65,44 @@ private:
         }
         const AABB box = m_nodes[index].box;
         const Point3 mid = box.center();
+        std::array<AABB, 8> child_box;
+        std::array<std::vector<std::uint32_t>, 8> inside;
+        std::size_t references = 0;
+        for (int c = 0; c < 8; ++c) {
+            for (int a = 0; a < 3; ++a) {
+                const bool upper = (c >> a) & 1;
+                child_box[c].lo[a] = upper ? mid[a] : box.lo[a];
+                child_box[c].hi[a] = upper ? box.hi[a] : mid[a];
+            }
+            // On an axis where the node is flat both halves are the same slab: only the lower one is filled.
+            bool duplicate_half = false;
+            for (int a = 0; a < 3; ++a) duplicate_half |= ((c >> a) & 1) && !(box.hi[a] > box.lo[a]);
+            if (duplicate_half) continue;
+            for (std::uint32_t p : prims) {
+                // Clip only triangles whose bounds cross the child's border; most are wholly in or out.
+                const AABB b = mesh.triangle_bounds(p);
+                if (b.intersected(child_box[c]).is_empty()) continue;
+                const bool contained = child_box[c].contains(b.lo) && child_box[c].contains(b.hi);
+                if (contained ||
+                    !clip_triangle(mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2), child_box[c]).is_empty())
+                    inside[c].push_back(p);
+            }
+            references += inside[c].size();
+        }
+        // Children that would together hold more than 3 copies of every primitive (a flat node, or
+        // heavily overlapping primitives such as stacked quads) do not pay: this node stays a leaf,
+        // which also keeps the tree from growing exponentially.
+        if (references > 3 * prims.size()) {
+            m_nodes[index].first = static_cast<std::uint32_t>(m_prims.size());
+            m_nodes[index].count = static_cast<std::uint32_t>(prims.size());
+            m_prims.insert(m_prims.end(), prims.begin(), prims.end());
+            return;
+        }
         const auto first = static_cast<std::uint32_t>(m_nodes.size());
         m_nodes[index].first = first;
         m_nodes[index].count = kInterior;
-        for (int c = 0; c < 8; ++c) {
-            AABB child;
-            for (int a = 0; a < 3; ++a) {
-                const bool upper = (c >> a) & 1;
-                child.lo[a] = upper ? mid[a] : box.lo[a];
-                child.hi[a] = upper ? box.hi[a] : mid[a];
-            }
-            m_nodes.push_back({child, 0, 0});
-        }
-        for (int c = 0; c < 8; ++c) {
-            const AABB child = m_nodes[first + c].box;
-            std::vector<std::uint32_t> inside;
-            for (std::uint32_t p : prims)
-                if (!clip_triangle(mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2), child).is_empty()) inside.push_back(p);
-            build(mesh, first + static_cast<std::uint32_t>(c), inside, depth + 1);
-        }
+        for (int c = 0; c < 8; ++c) m_nodes.push_back({child_box[c], 0, 0});
+        for (int c = 0; c < 8; ++c) build(mesh, first + static_cast<std::uint32_t>(c), inside[c], depth + 1);
     }
 
     template <bool AnyHit>
