@@ -1,0 +1,27 @@
+#pragma once
+/// \brief A shape placed by an affine transform, so one mesh or shape can appear several times.
+#include <rtlab/geometry/shape.hpp>
+
+#include <memory>
+
+namespace rtlab {
+
+/// \brief object-to-world affine transform applied to a shared shape. Rays go to object space (t is
+/// unchanged because the direction is transformed, not normalised); normals come back by the inverse
+/// transpose, so non-uniform scales keep them perpendicular.
+class Instance final : public Shape {
+public:
+    /// Throws rtlab::Error for a singular or non-finite transform.
+    Instance(std::shared_ptr<const Shape> shape, const Mat4& object_to_world);
+    AABB bounds() const override;
+    bool intersect(const Ray& ray, SurfaceHit& hit) const override;
+    bool occluded(const Ray& ray) const override;
+
+private:
+    Ray to_object(const Ray& ray) const;
+    std::shared_ptr<const Shape> m_shape;
+    Mat4 m_to_world, m_to_object;
+    Mat3 m_normal_to_world;  // inverse transpose of the linear part
+};
+
+}  // namespace rtlab

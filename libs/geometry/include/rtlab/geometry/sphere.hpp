@@ -1,0 +1,23 @@
+#pragma once
+/// \brief Sphere, intersected with a cancellation-free quadratic.
+#include <rtlab/geometry/shape.hpp>
+
+namespace rtlab {
+
+/// \brief Sphere by centre and radius. uv: u = longitude (0 at -x, increasing towards -z, i.e. eastwards
+/// seen from +y), v = 1 at the north pole (+y) and 0 at the south pole, so an equirectangular planet map
+/// whose first row is the north pole appears upright (textures take v = 0 as the image's bottom row).
+class Sphere final : public Shape {
+public:
+    Sphere(const Point3& centre, float radius);
+    AABB bounds() const override;
+    bool intersect(const Ray& ray, SurfaceHit& hit) const override;
+    bool occluded(const Ray& ray) const override;
+
+private:
+    bool nearest_root(const Ray& ray, float& t) const;
+    Point3 m_centre;
+    float m_radius;
+};
+
+}  // namespace rtlab

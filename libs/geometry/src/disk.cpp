@@ -1,0 +1,47 @@
+#include <rtlab/core/error.hpp>
+#include <rtlab/core/frame.hpp>
+#include <rtlab/geometry/disk.hpp>
+
+#include "hit_fill.hpp"
+
+namespace rtlab {
+
+Disk::Disk(const Point3& centre, const Normal3& normal, float radius) : m_centre(centre), m_radius(radius) {
+    if (!(radius > 0.0f) || !std::isfinite(radius)) throw Error("disk: radius must be positive and finite");
+    if (!(glm::length(normal) > 0.0f) || !is_finite(normal)) throw Error("disk: normal must be non-zero and finite");
+    m_normal = glm::normalize(normal);
+}
+
+AABB Disk::bounds() const {
+    // Extent along each axis: r sqrt(1 - n_a^2).
+    const Vec3 e = m_radius * glm::sqrt(glm::max(Vec3(0.0f), Vec3(1.0f) - m_normal * m_normal));
+    return {m_centre - e, m_centre + e};
+}
+
+bool Disk::hit_t(const Ray& ray, float& t) const {
+    const float denom = glm::dot(m_normal, ray.direction);
+    if (denom == 0.0f || !std::isfinite(denom)) return false;
+    t = glm::dot(m_normal, m_centre - ray.origin) / denom;
+    if (!(t > ray.tmin && t < ray.tmax)) return false;
+    const Vec3 r = ray.at(t) - m_centre;
+    return glm::dot(r, r) <= m_radius * m_radius;
+}
+
+bool Disk::intersect(const Ray& ray, SurfaceHit& hit) const {
+    float t;
+    if (!hit_t(ray, t)) return false;
+    const Point3 p = ray.at(t);
+    const Frame f = Frame::from_normal(m_normal);
+    const Vec3 local = f.to_local(p - m_centre);
+    const float angle = std::atan2(local.y, local.x);
+    const Vec2 uv(glm::length(Vec2(local.x, local.y)) / m_radius, (angle < 0.0f ? angle + 2.0f * kPi : angle) / (2.0f * kPi));
+    geometry::fill_hit(hit, ray, t, p, m_normal, uv, f.s, 0, this);
+    return true;
+}
+
+bool Disk::occluded(const Ray& ray) const {
+    float t;
+    return hit_t(ray, t);
+}
+
+}  // namespace rtlab

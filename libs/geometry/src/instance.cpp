@@ -1,0 +1,48 @@
+#include <rtlab/core/error.hpp>
+#include <rtlab/geometry/instance.hpp>
+
+#include <cmath>
+
+namespace rtlab {
+
+Instance::Instance(std::shared_ptr<const Shape> shape, const Mat4& object_to_world)
+    : m_shape(std::move(shape)), m_to_world(object_to_world) {
+    if (!m_shape) throw Error("instance: no shape");
+    const float det = glm::determinant(Mat3(object_to_world));
+    if (!(std::abs(det) > 0.0f) || !std::isfinite(det)) throw Error("instance: the transform is singular or not finite");
+    m_to_object = glm::inverse(object_to_world);
+    m_normal_to_world = glm::transpose(Mat3(m_to_object));
+}
+
+AABB Instance::bounds() const {
+    const AABB b = m_shape->bounds();
+    AABB out;
+    for (int c = 0; c < 8; ++c) {
+        const Point3 corner((c & 1) ? b.hi.x : b.lo.x, (c & 2) ? b.hi.y : b.lo.y, (c & 4) ? b.hi.z : b.lo.z);
+        out.expand(Point3(m_to_world * Vec4(corner, 1.0f)));
+    }
+    return out;
+}
+
+Ray Instance::to_object(const Ray& ray) const {
+    return Ray{Point3(m_to_object * Vec4(ray.origin, 1.0f)), Vec3(m_to_object * Vec4(ray.direction, 0.0f)), ray.tmin,
+               ray.tmax};
+}
+
+bool Instance::intersect(const Ray& ray, SurfaceHit& hit) const {
+    SurfaceHit local = hit;
+    if (!m_shape->intersect(to_object(ray), local)) return false;
+    hit = local;
+    hit.point = ray.at(local.t);
+    hit.geometric_normal = glm::normalize(m_normal_to_world * local.geometric_normal);
+    hit.shading_normal = glm::normalize(m_normal_to_world * local.shading_normal);
+    const Vec3 t = Vec3(m_to_world * Vec4(local.tangent, 0.0f));
+    const Vec3 ortho = t - glm::dot(t, hit.shading_normal) * hit.shading_normal;
+    if (glm::dot(ortho, ortho) > 0.0f) hit.tangent = glm::normalize(ortho);
+    hit.front_face = glm::dot(ray.direction, hit.geometric_normal) < 0.0f;
+    return true;
+}
+
+bool Instance::occluded(const Ray& ray) const { return m_shape->occluded(to_object(ray)); }
+
+}  // namespace rtlab

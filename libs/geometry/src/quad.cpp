@@ -1,0 +1,44 @@
+#include <rtlab/core/error.hpp>
+#include <rtlab/geometry/quad.hpp>
+
+#include "hit_fill.hpp"
+
+namespace rtlab {
+
+Quad::Quad(const Point3& corner, const Vec3& edge_u, const Vec3& edge_v) : m_corner(corner), m_u(edge_u), m_v(edge_v) {
+    const Vec3 n = glm::cross(edge_u, edge_v);
+    if (!(glm::dot(n, n) > 0.0f) || !is_finite(n)) throw Error("quad: the edges must be finite and not parallel");
+    m_normal = glm::normalize(n);
+    m_w = n / glm::dot(n, n);
+}
+
+AABB Quad::bounds() const {
+    AABB b;
+    for (const Point3& p : {m_corner, m_corner + m_u, m_corner + m_v, m_corner + m_u + m_v}) b.expand(p);
+    return b;
+}
+
+bool Quad::hit_params(const Ray& ray, float& t, float& alpha, float& beta) const {
+    const float denom = glm::dot(m_normal, ray.direction);
+    if (denom == 0.0f || !std::isfinite(denom)) return false;
+    t = glm::dot(m_normal, m_corner - ray.origin) / denom;
+    if (!(t > ray.tmin && t < ray.tmax)) return false;
+    const Vec3 planar = ray.at(t) - m_corner;
+    alpha = glm::dot(m_w, glm::cross(planar, m_v));
+    beta = glm::dot(m_w, glm::cross(m_u, planar));
+    return alpha >= 0.0f && alpha <= 1.0f && beta >= 0.0f && beta <= 1.0f;
+}
+
+bool Quad::intersect(const Ray& ray, SurfaceHit& hit) const {
+    float t, alpha, beta;
+    if (!hit_params(ray, t, alpha, beta)) return false;
+    geometry::fill_hit(hit, ray, t, ray.at(t), m_normal, {alpha, beta}, m_u, 0, this);
+    return true;
+}
+
+bool Quad::occluded(const Ray& ray) const {
+    float t, alpha, beta;
+    return hit_params(ray, t, alpha, beta);
+}
+
+}  // namespace rtlab

@@ -1,0 +1,51 @@
+#include <rtlab/core/error.hpp>
+#include <rtlab/geometry/sphere.hpp>
+
+#include "hit_fill.hpp"
+
+#include <string>
+
+namespace rtlab {
+
+Sphere::Sphere(const Point3& centre, float radius) : m_centre(centre), m_radius(radius) {
+    if (!(radius > 0.0f) || !std::isfinite(radius) || !is_finite(centre))
+        throw Error("sphere: radius must be positive and finite, got " + std::to_string(radius));
+}
+
+AABB Sphere::bounds() const { return {m_centre - Vec3(m_radius), m_centre + Vec3(m_radius)}; }
+
+bool Sphere::nearest_root(const Ray& ray, float& t) const {
+    const Vec3 oc = ray.origin - m_centre;
+    const Vec3& d = ray.direction;
+    const float a = glm::dot(d, d);
+    const float b = glm::dot(oc, d);
+    // |oc|^2 - b^2 / a loses everything for a far ray; the perpendicular vector keeps full precision.
+    const Vec3 perp = oc - (b / a) * d;
+    const float disc = a * (m_radius - glm::length(perp)) * (m_radius + glm::length(perp));
+    const float c = glm::dot(oc, oc) - m_radius * m_radius;
+    float t0, t1;
+    if (!geometry::stable_roots(a, b, c, disc, t0, t1)) return false;
+    if (t0 > ray.tmin && t0 < ray.tmax) t = t0;
+    else if (t1 > ray.tmin && t1 < ray.tmax) t = t1;
+    else return false;
+    return true;
+}
+
+bool Sphere::intersect(const Ray& ray, SurfaceHit& hit) const {
+    float t;
+    if (!nearest_root(ray, t)) return false;
+    const Point3 p = ray.at(t);
+    const Normal3 n = glm::normalize(p - m_centre);
+    const float phi = std::atan2(-n.z, n.x);  // eastwards from -x
+    const float u = (phi + kPi) / (2.0f * kPi);
+    const float v = 1.0f - std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi;
+    geometry::fill_hit(hit, ray, t, p, n, {u, v}, Vec3(n.z, 0.0f, -n.x), 0, this);
+    return true;
+}
+
+bool Sphere::occluded(const Ray& ray) const {
+    float t;
+    return nearest_root(ray, t);
+}
+
+}  // namespace rtlab

@@ -1,0 +1,168 @@
+#include <rtlab/core/error.hpp>
+#include <rtlab/geometry/box.hpp>
+#include <rtlab/geometry/cylinder.hpp>
+#include <rtlab/geometry/disk.hpp>
+#include <rtlab/geometry/instance.hpp>
+#include <rtlab/geometry/quad.hpp>
+#include <rtlab/geometry/sphere.hpp>
+#include <rtlab/geometry/triangle_shape.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+using namespace rtlab;
+
+namespace {
+SurfaceHit must_hit(const Shape& s, const Ray& r) {
+    SurfaceHit h;
+    REQUIRE(s.intersect(r, h));
+    REQUIRE(s.occluded(r));
+    return h;
+}
+bool misses(const Shape& s, const Ray& r) {
+    SurfaceHit h;
+    return !s.intersect(r, h) && !s.occluded(r);
+}
+}  // namespace
+
+TEST_CASE("sphere: outside, inside, grazing and from the surface", "[shapes]") {
+    const Sphere s({0, 0, 0}, 2.0f);
+    SurfaceHit h = must_hit(s, Ray{{0, 0, -10}, {0, 0, 1}});
+    CHECK(h.t == Approx(8.0f));
+    CHECK(h.geometric_normal.z == Approx(-1.0f));
+    CHECK(h.front_face);
+    h = must_hit(s, Ray{{0.5f, 0, 0}, {1, 0, 0}});  // from inside: the exit, seen from the back
+    CHECK(h.t == Approx(1.5f));
+    CHECK_FALSE(h.front_face);
+    CHECK(must_hit(s, Ray{{2.0f * (1.0f - 1e-6f), 0, -10}, {0, 0, 1}}).t == Approx(10.0f).epsilon(1e-2));  // grazing inside
+    CHECK(misses(s, Ray{{2.0f * (1.0f + 1e-5f), 0, -10}, {0, 0, 1}}));                                     // grazing outside
+    // Leaving the surface outwards with tmin = 0: no hit further than rounding from the origin.
+    const Point3 on = glm::normalize(Vec3(1, 2, 3)) * 2.0f;
+    SurfaceHit self;
+    if (s.intersect(Ray{on, glm::normalize(on)}, self)) CHECK(self.t < 1e-5f);
+    CHECK(misses(s, Ray{on, glm::normalize(on), 1e-4f, kInfinity}));
+    // Entering from the surface: the far side at t = 4 (through the centre).
+    CHECK(must_hit(s, Ray{on, -glm::normalize(on), 1e-4f, kInfinity}).t == Approx(4.0f));
+    CHECK_THROWS_AS(Sphere({0, 0, 0}, 0.0f), Error);
+}
+
+TEST_CASE("sphere: huge and tiny scales and far offsets keep precision", "[shapes]") {
+    for (float r : {1e-4f, 1.0f, 1e5f}) {
+        for (float offset : {0.0f, 1e6f}) {
+            const Point3 c(offset, offset, 0);
+            const Sphere s(c, r);
+            const float distance = 1e3f * r;
+            SurfaceHit h = must_hit(s, Ray{c + Vec3(0, 0, -distance), {0, 0, 1}});
+            INFO("r " << r << " offset " << offset);
+            // At an offset of 1e6 a float step is 0.06: the hit point cannot be better than that.
+            const float tol = std::max(1e-5f * distance, offset > 0 ? 0.2f : 0.0f);
+            CHECK(std::abs(h.t - (distance - r)) <= tol);
+            CHECK(std::isfinite(h.uv.x));
+            // A far ray aimed just inside the silhouette still hits (no cancellation in the discriminant).
+            const Vec3 target = c + Vec3(0.999f * r, 0, 0);
+            const Point3 origin = c + Vec3(0, 0, -distance);
+            if (offset == 0.0f) CHECK(s.occluded(Ray{origin, target - origin}));
+        }
+    }
+}
+
+TEST_CASE("sphere uv puts the north pole at v = 1 and is continuous in u", "[shapes]") {
+    const Sphere s({0, 0, 0}, 1.0f);
+    CHECK(must_hit(s, Ray{{0, 5, 0}, {0, -1, 0}}).uv.y == Approx(1.0f));
+    CHECK(must_hit(s, Ray{{0, -5, 0}, {0, 1, 0}}).uv.y == Approx(0.0f).margin(1e-6));
+    const SurfaceHit eq = must_hit(s, Ray{{-5, 0, 0}, {1, 0, 0}});  // -x: u = 0 or 1 (the seam)
+    CHECK((eq.uv.x == Approx(0.0f).margin(1e-6) || eq.uv.x == Approx(1.0f)));
+    CHECK(must_hit(s, Ray{{5, 0, 0}, {-1, 0, 0}}).uv.x == Approx(0.5f));
+    const SurfaceHit h = must_hit(s, Ray{{0.3f, 0.2f, -5}, {0, 0, 1}});
+    CHECK(std::abs(glm::dot(h.tangent, h.shading_normal)) < 1e-5f);
+    CHECK(glm::length(h.tangent) == Approx(1.0f));
+}
+
+TEST_CASE("cylinder: side, caps, open tube and any axis", "[shapes]") {
+    const Cylinder c({0, 0, 0}, {0, 0, 4}, 1.0f, true);
+    SurfaceHit h = must_hit(c, Ray{{-5, 0, 2}, {1, 0, 0}});
+    CHECK(h.t == Approx(4.0f));
+    CHECK(h.geometric_normal.x == Approx(-1.0f));
+    CHECK(h.uv.y == Approx(0.5f));
+    h = must_hit(c, Ray{{0.2f, 0.1f, -3}, {0, 0, 1}});  // along the axis: the base cap
+    CHECK(h.t == Approx(3.0f));
+    CHECK(h.geometric_normal.z == Approx(-1.0f));
+    CHECK(misses(c, Ray{{-5, 0, 5}, {1, 0, 0}}));  // above the top
+    const Cylinder open({0, 0, 0}, {0, 0, 4}, 1.0f, false);
+    CHECK(misses(open, Ray{{0.2f, 0.1f, -3}, {0, 0, 1}}));  // along the axis through an open tube
+    h = must_hit(open, Ray{{0, 0, 2}, {1, 0, 0}});         // from inside the tube: its inner wall
+    CHECK(h.t == Approx(1.0f));
+    CHECK_FALSE(h.front_face);
+    // A tilted cylinder from (1,1,1) along (1,1,1): a ray perpendicular to the axis through its middle.
+    const Vec3 axis = glm::normalize(Vec3(1, 1, 1));
+    const Cylinder tilted({1, 1, 1}, Point3(1, 1, 1) + 6.0f * axis, 0.5f, true);
+    const Point3 mid = Point3(1, 1, 1) + 3.0f * axis;
+    const Vec3 across = glm::normalize(glm::cross(axis, Vec3(0, 0, 1)));
+    h = must_hit(tilted, Ray{mid - 4.0f * across, across});
+    CHECK(h.t == Approx(3.5f));
+    CHECK(glm::dot(h.geometric_normal, -across) == Approx(1.0f));
+}
+
+TEST_CASE("disk and quad: inside, edges, outside and parallel", "[shapes]") {
+    const Disk d({0, 0, 1}, {0, 0, 2}, 1.0f);
+    CHECK(must_hit(d, Ray{{0.5f, 0.5f, 3}, {0, 0, -1}}).t == Approx(2.0f));
+    CHECK(misses(d, Ray{{0.8f, 0.8f, 3}, {0, 0, -1}}));
+    CHECK(misses(d, Ray{{-5, 0, 1}, {1, 0, 0}}));  // in its plane
+    const Quad q({0, 0, 0}, {2, 0, 0}, {0, 3, 0});
+    SurfaceHit h = must_hit(q, Ray{{0.5f, 2.25f, 1}, {0, 0, -1}});
+    CHECK(h.uv.x == Approx(0.25f));
+    CHECK(h.uv.y == Approx(0.75f));
+    CHECK(h.geometric_normal.z == Approx(1.0f));
+    CHECK(must_hit(q, Ray{{2, 3, 1}, {0, 0, -1}}).uv == Vec2(1, 1));  // the far corner is inside
+    CHECK(misses(q, Ray{{2.01f, 1, 1}, {0, 0, -1}}));
+    CHECK_THROWS_AS(Quad({0, 0, 0}, {1, 0, 0}, {2, 0, 0}), Error);
+}
+
+TEST_CASE("box: faces, inside rays and normals", "[shapes]") {
+    const Box b(AABB{{0, 0, 0}, {1, 2, 3}});
+    SurfaceHit h = must_hit(b, Ray{{0.5f, 1, -2}, {0, 0, 1}});
+    CHECK(h.t == Approx(2.0f));
+    CHECK(h.geometric_normal == Normal3(0, 0, -1));
+    h = must_hit(b, Ray{{0.5f, 1, 1}, {1, 0, 0}});  // from inside
+    CHECK(h.t == Approx(0.5f));
+    CHECK(h.geometric_normal == Normal3(1, 0, 0));
+    CHECK_FALSE(h.front_face);
+    CHECK(misses(b, Ray{{0.5f, 1, -2}, {0, 0, -1}}));
+}
+
+TEST_CASE("mesh triangle interpolates normals and uvs", "[shapes]") {
+    auto mesh = std::make_shared<TriangleMesh>();
+    mesh->positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh->normals = {glm::normalize(Vec3(-1, -1, 1)), {0, 0, 1}, {0, 0, 1}};
+    mesh->uvs = {{0, 0}, {1, 0}, {0, 1}};
+    mesh->triangles = {{0, 1, 2}};
+    const TriangleShape t(mesh, 0);
+    const SurfaceHit h = must_hit(t, Ray{{0.25f, 0.25f, 1}, {0, 0, -1}});
+    CHECK(h.t == Approx(1.0f));
+    CHECK(h.uv.x == Approx(0.25f));
+    CHECK(h.geometric_normal == Normal3(0, 0, 1));
+    CHECK(h.shading_normal.x < 0.0f);  // pulled towards corner 0's normal
+    CHECK(glm::length(h.shading_normal) == Approx(1.0f));
+    CHECK(std::abs(glm::dot(h.tangent, h.shading_normal)) < 1e-5f);
+    CHECK_THROWS_AS(TriangleShape(mesh, 1), Error);
+}
+
+TEST_CASE("instances move, scale and keep normals perpendicular", "[shapes]") {
+    const auto unit = std::make_shared<Sphere>(Point3(0, 0, 0), 1.0f);
+    // An ellipsoid: x stretched by 3, moved to (10, 0, 0).
+    const Mat4 m = glm::scale(glm::translate(Mat4(1.0f), Vec3(10, 0, 0)), Vec3(3, 1, 1));
+    const Instance e(unit, m);
+    CHECK(e.bounds().lo.x == Approx(7.0f));
+    CHECK(e.bounds().hi.x == Approx(13.0f));
+    SurfaceHit h = must_hit(e, Ray{{0, 0, 0}, {1, 0, 0}});
+    CHECK(h.t == Approx(7.0f));
+    CHECK(h.point.x == Approx(7.0f));
+    // Off-axis hit: the normal of x^2/9 + y^2 = 1 at (x, y) is (x / 9, y) normalised.
+    h = must_hit(e, Ray{{10 + 1.5f, 5, 0}, {0, -1, 0}});
+    const Vec3 expected = glm::normalize(Vec3(1.5f / 9.0f, std::sqrt(1.0f - 0.25f), 0));
+    CHECK(glm::length(h.geometric_normal - expected) < 1e-4f);
+    CHECK_THROWS_AS(Instance(unit, Mat4(0.0f)), Error);
+}
