@@ -11,16 +11,11 @@ namespace {
 class KdMeshAccelerator final : public TriangleAccelerator {
 public:
     KdMeshAccelerator(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options)
-        : m_name(kd_strategy_name(strategy)), m_triangles(mesh, options.triangle_test) {
-        KdBuildInput input;
-        input.bounds.reserve(mesh.triangle_count());
-        for (std::size_t i = 0; i < mesh.triangle_count(); ++i)
-            input.bounds.push_back(m_triangles.usable(i) ? mesh.triangle_bounds(i) : AABB{});
-        input.clip = [&mesh](std::uint32_t i, const AABB& box) {
-            return accel::clip_triangle(mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2), box);
-        };
-        m_tree = build_kd_tree(input, strategy, KdCostModel{}, options.threads);
-        m_tree.stats.bytes += static_cast<std::int64_t>(m_triangles.bytes());
+        : m_name(kd_strategy_name(strategy)), m_tree(build(strategy, mesh, options)),
+          m_triangles(mesh, options.triangle_test, leaf_order(m_tree)) {
+        m_tree.stats.bytes = static_cast<std::int64_t>(m_tree.nodes.size() * sizeof(KdNode) +
+                                                       m_tree.primitive_indices.size() * sizeof(std::uint32_t) +
+                                                       m_triangles.bytes());
     }
 
     std::string_view name() const override { return m_name; }
@@ -47,9 +42,40 @@ public:
     AccelStats stats() const override { return m_tree.stats; }
 
 private:
+    static KdTreeData build(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options) {
+        KdBuildInput input;
+        input.bounds.reserve(mesh.triangle_count());
+        for (std::size_t i = 0; i < mesh.triangle_count(); ++i)
+            input.bounds.push_back(mesh.is_degenerate(i) ? AABB{} : mesh.triangle_bounds(i));
+        input.clip = [&mesh](std::uint32_t i, const AABB& box) {
+            return accel::clip_triangle(mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2), box);
+        };
+        return build_kd_tree(input, strategy, KdCostModel{}, options.threads);
+    }
+
+    // Renumbers the leaves so that every leaf (one-primitive leaves too) refers to consecutive entries of
+    // the leaf-ordered triangle array; returns the mesh triangle of each entry.
+    static std::vector<std::uint32_t> leaf_order(KdTreeData& tree) {
+        std::vector<std::uint32_t> order;
+        order.reserve(tree.primitive_indices.size() + tree.nodes.size() / 2);
+        for (KdNode& node : tree.nodes) {
+            if (!node.is_leaf()) continue;
+            const std::uint32_t count = node.primitive_count();
+            const auto first = static_cast<std::uint32_t>(order.size());
+            if (count == 1) order.push_back(node.primitive_offset());
+            for (std::uint32_t k = 0; count > 1 && k < count; ++k)
+                order.push_back(tree.primitive_indices[node.primitive_offset() + k]);
+            // One-primitive leaves name their entry directly; the others go through the identity array.
+            node = KdNode::leaf(count, first);
+        }
+        tree.primitive_indices.resize(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k) tree.primitive_indices[k] = static_cast<std::uint32_t>(k);
+        return order;
+    }
+
     std::string m_name;
-    accel::MeshTriangles m_triangles;
     KdTreeData m_tree;
+    accel::MeshTriangles m_triangles;
 };
 
 }  // namespace

@@ -11,33 +11,45 @@
 
 namespace rtlab::accel {
 
-/// \brief Corners (watertight, moller) or plane data (plane), indexed by triangle; degenerate triangles
-/// are marked unusable and never tested.
+/// \brief Corners (watertight, moller) or plane data (plane) of a mesh's triangles, each entry holding
+/// triangle order[k] (all triangles in mesh order when no order is given). Accelerators pass their
+/// leaves' order so that a leaf's triangles sit next to each other in memory: incoherent rays then pay
+/// one cache miss per leaf, not one per triangle. Degenerate triangles are marked unusable.
 class MeshTriangles {
 public:
-    MeshTriangles(const TriangleMesh& mesh, TriangleTest test) : m_test(test) {
-        const std::size_t n = mesh.triangle_count();
+    MeshTriangles(const TriangleMesh& mesh, TriangleTest test, std::vector<std::uint32_t> order = {})
+        : m_test(test), m_original(std::move(order)) {
+        if (m_original.empty()) {
+            m_original.resize(mesh.triangle_count());
+            for (std::size_t i = 0; i < m_original.size(); ++i) m_original[i] = static_cast<std::uint32_t>(i);
+        }
+        const std::size_t n = m_original.size();
         m_usable.resize(n);
         if (test == TriangleTest::plane) m_planes.resize(n);
         else m_corners.resize(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            m_usable[i] = !mesh.is_degenerate(i);
-            if (test == TriangleTest::plane) m_planes[i] = PlaneTriangle(mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2));
-            else m_corners[i] = {mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2)};
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::uint32_t i = m_original[k];
+            m_usable[k] = !mesh.is_degenerate(i);
+            if (test == TriangleTest::plane) m_planes[k] = PlaneTriangle(mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2));
+            else m_corners[k] = {mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2)};
         }
     }
 
     TriangleTest test() const { return m_test; }
     std::size_t size() const { return m_usable.size(); }
-    bool usable(std::size_t i) const { return m_usable[i] != 0; }
+    bool usable(std::size_t k) const { return m_usable[k] != 0; }
+    /// The mesh's index of entry k.
+    std::uint32_t original(std::size_t k) const { return m_original[k]; }
     std::size_t bytes() const {
-        return m_corners.size() * sizeof(m_corners[0]) + m_planes.size() * sizeof(PlaneTriangle) + m_usable.size();
+        return m_corners.size() * sizeof(m_corners[0]) + m_planes.size() * sizeof(PlaneTriangle) + m_usable.size() +
+               m_original.size() * sizeof(std::uint32_t);
     }
-    const std::array<Point3, 3>& corners(std::uint32_t i) const { return m_corners[i]; }
-    const PlaneTriangle& plane(std::uint32_t i) const { return m_planes[i]; }
+    const std::array<Point3, 3>& corners(std::uint32_t k) const { return m_corners[k]; }
+    const PlaneTriangle& plane(std::uint32_t k) const { return m_planes[k]; }
 
 private:
     TriangleTest m_test;
+    std::vector<std::uint32_t> m_original;
     std::vector<std::array<Point3, 3>> m_corners;
     std::vector<PlaneTriangle> m_planes;
     std::vector<std::uint8_t> m_usable;
@@ -56,7 +68,7 @@ struct TriangleRay<TriangleTest::watertight> {
     explicit TriangleRay(const Ray& r) : ray(r), sheared(r) {}
 };
 
-/// Tests triangle i for tmin < t < closest; on a hit fills hit and lowers closest.
+/// Tests entry i for tmin < t < closest; on a hit fills hit (with the mesh's triangle index) and lowers closest.
 template <TriangleTest Test>
 inline bool test_triangle(const MeshTriangles& tris, const TriangleRay<Test>& r, std::uint32_t i, float& closest,
                           MeshHit& hit) {
@@ -72,7 +84,7 @@ inline bool test_triangle(const MeshTriangles& tris, const TriangleRay<Test>& r,
     }
     if (!h) return false;
     closest = h->t;
-    hit = MeshHit{h->t, i, h->u, h->v};
+    hit = MeshHit{h->t, tris.original(i), h->u, h->v};
     return true;
 }
 

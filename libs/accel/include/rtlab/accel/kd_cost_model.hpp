@@ -11,7 +11,7 @@ namespace rtlab {
 /// when a side is empty), with P the surface-area ratios; a leaf costs intersection * N.
 class KdCostModel {
 public:
-    KdCostModel(float traversal = 1.0f, float intersection = 1.5f, float empty_bonus = 0.2f)
+    KdCostModel(float traversal = 1.0f, float intersection = 0.3f, float empty_bonus = 0.2f)
         : m_traversal(traversal), m_intersection(intersection), m_empty_bonus(empty_bonus) {
         if (!(traversal > 0.0f && std::isfinite(traversal)) || !(intersection > 0.0f && std::isfinite(intersection)))
             throw Error("kd cost model: traversal and intersection costs must be positive and finite");
