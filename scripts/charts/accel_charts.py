@@ -36,7 +36,7 @@ def speed_vs_build(rows, out_dir):
         ax.set_xlabel("build time, s (median)")
         ax.set_ylabel("closest-hit throughput, Mrays/s (median)")
         threads = rs[0]["threads"]
-        ax.set_title(f"{mesh}, {ray_set} rays, {threads} thread(s): speed against build time")
+        ax.set_title(f"{mesh}, {ray_set} rays, {threads} thread(s): speed against build time", fontsize=10)
         ax.grid(True, alpha=0.3)
         fig.tight_layout()
         name = f"accel_speed_vs_build_{Path(mesh).stem}_{ray_set}.png"
