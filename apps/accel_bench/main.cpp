@@ -108,7 +108,8 @@ int main(int argc, char** argv) {
     app.add_option("--rays", ray_specs, "primary, random or a ray file (repeatable; default: primary and random)");
     app.add_option("--threads", threads, "threads for building and tracing (default: all)")->check(CLI::NonNegativeNumber);
     app.add_option("--runs", runs, "timed runs per measurement (median; default 5)")->check(CLI::PositiveNumber);
-    app.add_option("--hits-out", hits_out, "write the closest hits of the first method on the first ray set (RTHITS01)");
+    app.add_option("--hits-out", hits_out,
+                   "write the closest hits of the first method other than brute on the first ray set (RTHITS01)");
     app.add_option("--csv", csv_path, "write the results as CSV (FORMATS.md)");
     app.add_option("--triangle", triangle, "ray-triangle test: watertight, moller or plane");
     app.add_option("--sample", sample_size, "rays checked against the reference per ray set (default 2000)");
@@ -120,8 +121,11 @@ int main(int argc, char** argv) {
         BuildOptions options;
         options.triangle_test = parse_triangle_test(triangle);
         options.threads = threads;
-        if (methods.empty()) methods = {"kd-sah", "kd-sah-binned", "bvh"};
         const auto known = accelerator_methods();
+        if (methods.empty()) {
+            methods = {"kd-sah", "kd-sah-binned", "bvh"};
+            if (std::find(known.begin(), known.end(), "embree") != known.end()) methods.emplace_back("embree");
+        }
         for (const auto& m : methods)
             if (std::find(known.begin(), known.end(), m) == known.end()) make_accelerator(m, TriangleMesh{});  // throws the listing
         if (ray_specs.empty()) ray_specs = {"primary", "random"};
@@ -224,16 +228,17 @@ int main(int argc, char** argv) {
                 }
                 const double closest_mrays = static_cast<double>(rays->size()) / closest_s / 1e6;
                 const double any_mrays = static_cast<double>(rays->size()) / any_s / 1e6;
-                fmt::print("{:<14} {:>9.4f} {:>9} {:>9} {:>6} {:>6.2f} {:>11} {:>9.2f} {:<10} {:>9} {:>10.3f} {:>10.3f} {:>10}\n",
-                           method, build_s, field(st.nodes), field(st.leaves), field(st.max_depth), st.mean_leaf_primitives,
-                           field(st.bytes), st.sah_cost, set.name, rays->size(), closest_mrays, any_mrays, field(mismatches));
+                fmt::print("{:<14} {:>9.4f} {:>9} {:>9} {:>6} {:>6} {:>11} {:>9} {:<10} {:>9} {:>10.3f} {:>10.3f} {:>10}\n",
+                           method, build_s, field(st.nodes), field(st.leaves), field(st.max_depth), field(st.mean_leaf_primitives, "{:.2f}"),
+                           field(st.bytes), field(st.sah_cost, "{:.2f}"), set.name, rays->size(), closest_mrays, any_mrays, field(mismatches));
                 if (csv)
                     csv->print("{},{},{},{},{:.6g},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{},{},{}\n", method, mesh_name,
                                mesh.triangle_count(), thread_count, build_s, field(st.nodes), field(st.leaves),
                                field(st.empty_leaves), field(st.max_depth), field(st.mean_leaf_primitives), field(st.bytes),
                                field(st.sah_cost), set.name, rays->size(), closest_mrays, any_mrays, field(mismatches),
                                to_string(options.triangle_test), ref.name);
-                if (!hits_out.empty() && !hits_written) {
+                // Brute force traced only the sample, so its records do not answer the whole set.
+                if (!hits_out.empty() && !hits_written && method != "brute") {
                     write_hit_file(hits_out, hits);
                     hits_written = true;
                 }

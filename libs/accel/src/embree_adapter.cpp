@@ -91,8 +91,9 @@ private:
         r.dir_x = ray.direction.x;
         r.dir_y = ray.direction.y;
         r.dir_z = ray.direction.z;
-        // Embree's interval is closed, rtlab's open: move both ends in by one float.
-        r.tnear = std::nextafter(std::max(ray.tmin, 0.0f), std::numeric_limits<float>::infinity());
+        // Embree accepts tnear < t <= tfar; rtlab's interval is open at both ends, so only tfar moves in by
+        // one float (moving tnear too would lose hits at the float just above tmin).
+        r.tnear = std::max(ray.tmin, 0.0f);
         r.tfar = std::nextafter(ray.tmax, -std::numeric_limits<float>::infinity());
         r.mask = 0xFFFFFFFFu;
         r.time = 0.0f;
