@@ -1,11 +1,13 @@
 // Bounding volume hierarchy, binned SAH (16 bins on the longest centroid axis), flat 32-byte nodes,
-// children visited near-first by the ray's direction sign on the split axis.
+// both children's boxes tested and the nearer entered first; leaves address their triangles in a
+// leaf-ordered copy.
 #include "baselines.hpp"
 #include "mesh_triangles.hpp"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 
 namespace rtlab::accel {
 
@@ -21,21 +23,19 @@ static_assert(sizeof(BvhNode) == 32);
 
 constexpr int kBins = 16;
 constexpr std::size_t kMaxLeaf = 4;
+// Below this depth the split is a median one, so the depth stays under kMedianDepth + log2(N) and the
+// traversal stack (one entry per level) cannot overflow.
+constexpr int kMedianDepth = 100;
+constexpr int kStackSize = 256;
 
 class Bvh final : public TriangleAccelerator {
 public:
-    Bvh(const TriangleMesh& mesh, const BuildOptions& options) : m_triangles(mesh, options.triangle_test) {
-        const auto start = std::chrono::steady_clock::now();
-        std::vector<Item> items;
-        for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {
-            if (!m_triangles.usable(i)) continue;
-            const AABB b = mesh.triangle_bounds(i);
-            items.push_back({static_cast<std::uint32_t>(i), b, b.center()});
-        }
-        if (!items.empty()) build(items, 0, items.size(), 0);
-        m_stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Bvh(const TriangleMesh& mesh, const BuildOptions& options)
+        : m_start(std::chrono::steady_clock::now()),
+          m_triangles(mesh, options.triangle_test, build_tree(mesh)) {
+        m_stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
         m_stats.nodes = static_cast<std::int64_t>(m_nodes.size());
-        m_stats.bytes = static_cast<std::int64_t>(m_nodes.size() * sizeof(BvhNode) + m_prims.size() * 4 + m_triangles.bytes());
+        m_stats.bytes = static_cast<std::int64_t>(m_nodes.size() * sizeof(BvhNode) + m_triangles.bytes());
         std::int64_t leaves = 0, prims = 0;
         double cost = 0.0;
         const float root_area = m_nodes.empty() ? 1.0f : m_nodes[0].box.surface_area();
@@ -60,6 +60,19 @@ public:
     AccelStats stats() const override { return m_stats; }
 
 private:
+    // Builds the nodes and returns the leaves' triangles in leaf order (the layout of m_triangles, so a
+    // leaf's triangles are adjacent in memory and a leaf addresses them by position).
+    std::vector<std::uint32_t> build_tree(const TriangleMesh& mesh) {
+        std::vector<Item> items;
+        for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {
+            if (mesh.is_degenerate(i)) continue;
+            const AABB b = mesh.triangle_bounds(i);
+            items.push_back({static_cast<std::uint32_t>(i), b, b.center()});
+        }
+        if (!items.empty()) build(items, 0, items.size(), 0);
+        return std::move(m_prims);
+    }
+
     struct Item {
         std::uint32_t index;
         AABB box;
@@ -125,7 +138,8 @@ private:
             const float cost = 1.0f + 1.5f * inv_area * (left.surface_area() * left_n + right_area[b] * right_n[b]);
             if (cost < best_cost) best_cost = cost, best_split = b;
         }
-        if (best_split < 0 && n <= 65535) return make_leaf();
+        if (depth >= kMedianDepth) best_split = -1;
+        else if (best_split < 0 && n <= 65535) return make_leaf();
         std::size_t mid;
         if (best_split < 0) {
             mid = first + n / 2;
@@ -143,49 +157,106 @@ private:
         return index;
     }
 
+    // Slab test against a node box with the inverse direction and its signs precomputed (Williams et
+    // al. 2005). A zero direction component gives an infinite inverse and, for an origin on that slab's
+    // plane, 0 * inf = NaN: the comparisons are written so a NaN bound is ignored (the axis then constrains
+    // nothing, which is exact for an origin inside the slab). The far end and the current closest t are
+    // enlarged by 2 gamma(3) (Ize 2013) so rounding never drops a hit.
+    struct BoxRay {
+        Vec3 origin, inv;
+        int negative[3];
+        float tmin;
+        explicit BoxRay(const Ray& ray) : origin(ray.origin), tmin(ray.tmin) {
+            for (int a = 0; a < 3; ++a) {
+                inv[a] = 1.0f / ray.direction[a];
+                negative[a] = std::signbit(inv[a]) ? 1 : 0;
+            }
+        }
+        // t moved up by 2 gamma(3) relative; a product, so +-inf stays itself and never becomes NaN.
+        static float enlarge(float t) {
+            constexpr float kTwoGamma3 = 2.0f * 3.0f * 0x1p-24f / (1.0f - 3.0f * 0x1p-24f);
+            return t * (t > 0.0f ? 1.0f + kTwoGamma3 : 1.0f - kTwoGamma3);
+        }
+        // Entry distance into box for t in [tmin, limit], or +inf when the ray misses it.
+        float enter(const AABB& box, float limit) const {
+            float t0 = tmin, t1 = enlarge(limit);
+            for (int a = 0; a < 3; ++a) {
+                const float near_plane = negative[a] ? box.hi[a] : box.lo[a];
+                const float far_plane = negative[a] ? box.lo[a] : box.hi[a];
+                const float n = (near_plane - origin[a]) * inv[a];
+                const float f = enlarge((far_plane - origin[a]) * inv[a]);
+                t0 = n > t0 ? n : t0;  // false for NaN: keeps t0
+                t1 = f < t1 ? f : t1;
+            }
+            return t0 <= t1 ? t0 : kInfinity;
+        }
+    };
+
+    static bool finite_ray(const Ray& ray) {
+        for (int a = 0; a < 3; ++a)
+            if (std::isnan(ray.origin[a]) || std::isnan(ray.direction[a])) return false;
+        return !std::isnan(ray.tmin) && !std::isnan(ray.tmax) && ray.tmin < ray.tmax;
+    }
+
     template <bool AnyHit>
     bool traverse(const Ray& ray, MeshHit& hit) const {
-        if (m_nodes.empty()) return false;
+        if (m_nodes.empty() || !finite_ray(ray)) return false;
         return dispatch_triangle_test(m_triangles.test(), [&]<TriangleTest Test>() {
             const TriangleRay<Test> r(ray);
+            const BoxRay box_ray(ray);
             float closest = ray.tmax;
             bool any = false;
-            std::uint32_t stack[128];
+            struct Entry {
+                std::uint32_t node;
+                float t;
+            };
+            Entry stack[kStackSize];
             int top = 0;
-            stack[top++] = 0;
+            const float root_t = box_ray.enter(m_nodes[0].box, closest);
+            if (root_t == kInfinity) return false;
+            stack[top++] = {0, root_t};
             while (top > 0) {
-                const BvhNode& node = m_nodes[stack[--top]];
-                Ray clipped = ray;
-                clipped.tmax = closest;
-                if (!node.box.intersect(clipped)) continue;
-                if (node.count > 0) {
-                    for (std::uint32_t k = 0; k < node.count; ++k) {
-                        if (test_triangle<Test>(m_triangles, r, m_prims[node.offset_or_right + k], closest, hit)) {
-                            any = true;
-                            if constexpr (AnyHit) return true;
+                const Entry e = stack[--top];
+                if (e.t > BoxRay::enlarge(closest)) continue;  // a closer hit was found since it was pushed
+                std::uint32_t index = e.node;
+                for (;;) {
+                    const BvhNode& node = m_nodes[index];
+                    if (node.count > 0) {
+                        for (std::uint32_t k = 0; k < node.count; ++k) {
+                            if (test_triangle<Test>(m_triangles, r, node.offset_or_right + k, closest, hit)) {
+                                any = true;
+                                if constexpr (AnyHit) return true;
+                            }
                         }
+                        break;
                     }
-                    continue;
-                }
-                const auto self = static_cast<std::uint32_t>(&node - m_nodes.data());
-                const std::uint32_t left = self + 1, right = node.offset_or_right;
-                if (ray.direction[node.axis] > 0.0f) {
-                    stack[top++] = right;
-                    stack[top++] = left;
-                } else {
-                    stack[top++] = left;
-                    stack[top++] = right;
+                    const std::uint32_t left = index + 1, right = node.offset_or_right;
+                    const float tl = box_ray.enter(m_nodes[left].box, closest);
+                    const float tr = box_ray.enter(m_nodes[right].box, closest);
+                    if (tl == kInfinity && tr == kInfinity) break;
+                    if (tl == kInfinity) { index = right; continue; }
+                    if (tr == kInfinity) { index = left; continue; }
+                    // Both: descend into the nearer, keep the farther for later.
+                    if (tl <= tr) {
+                        stack[top++] = {right, tr};
+                        index = left;
+                    } else {
+                        stack[top++] = {left, tl};
+                        index = right;
+                    }
                 }
             }
             return any;
         });
     }
 
-    MeshTriangles m_triangles;
+    // Declared before m_triangles: build_tree fills them while m_triangles is being initialised.
+    std::chrono::steady_clock::time_point m_start;
     std::vector<BvhNode> m_nodes;
-    std::vector<std::uint32_t> m_prims;
-    AccelStats m_stats;
+    std::vector<std::uint32_t> m_prims;  // only during the build
     std::int64_t m_depth = 0;
+    MeshTriangles m_triangles;
+    AccelStats m_stats;
 };
 
 }  // namespace
