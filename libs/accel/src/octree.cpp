@@ -16,25 +16,16 @@ constexpr int kMaxDepth = 10;
 
 struct OctNode {
     AABB box;
-    std::uint32_t first;  // interior: first of 8 consecutive children; leaf: offset into m_prims
+    std::uint32_t first;  // interior: first of 8 consecutive children; leaf: offset into m_triangles
     std::uint32_t count;  // leaf primitive count; kInterior for interior nodes
 };
 constexpr std::uint32_t kInterior = 0xFFFFFFFFu;
 
 class Octree final : public TriangleAccelerator {
 public:
-    Octree(const TriangleMesh& mesh, const BuildOptions& options) : m_triangles(mesh, options.triangle_test) {
-        const auto start = std::chrono::steady_clock::now();
-        std::vector<std::uint32_t> all;
-        AABB box;
-        for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {
-            if (!m_triangles.usable(i)) continue;
-            all.push_back(static_cast<std::uint32_t>(i));
-            box.expand(mesh.triangle_bounds(i));
-        }
-        m_nodes.push_back({box, 0, 0});
-        if (!all.empty()) build(mesh, 0, all, 0);
-        m_stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Octree(const TriangleMesh& mesh, const BuildOptions& options)
+        : m_start(std::chrono::steady_clock::now()), m_triangles(mesh, options.triangle_test, build_tree(mesh)) {
+        m_stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
         std::int64_t leaves = 0, empty = 0, prims = 0;
         for (const auto& n : m_nodes)
             if (n.count != kInterior) ++leaves, empty += n.count == 0, prims += n.count;
@@ -43,7 +34,7 @@ public:
         m_stats.empty_leaves = empty;
         m_stats.max_depth = m_depth;
         m_stats.mean_leaf_primitives = leaves > empty ? static_cast<double>(prims) / static_cast<double>(leaves - empty) : 0.0;
-        m_stats.bytes = static_cast<std::int64_t>(m_nodes.size() * sizeof(OctNode) + m_prims.size() * 4 + m_triangles.bytes());
+        m_stats.bytes = static_cast<std::int64_t>(m_nodes.size() * sizeof(OctNode) + m_triangles.bytes());
     }
 
     std::string_view name() const override { return "octree"; }
@@ -55,6 +46,21 @@ public:
     AccelStats stats() const override { return m_stats; }
 
 private:
+    // Builds the nodes and returns the leaves' triangle references in leaf order: m_triangles holds one
+    // copy per reference, so a leaf's triangles are adjacent in memory and addressed by position.
+    std::vector<std::uint32_t> build_tree(const TriangleMesh& mesh) {
+        std::vector<std::uint32_t> all;
+        AABB box;
+        for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {
+            if (mesh.is_degenerate(i)) continue;
+            all.push_back(static_cast<std::uint32_t>(i));
+            box.expand(mesh.triangle_bounds(i));
+        }
+        m_nodes.push_back({box, 0, 0});
+        if (!all.empty()) build(mesh, 0, all, 0);
+        return std::move(m_prims);
+    }
+
     void build(const TriangleMesh& mesh, std::uint32_t index, const std::vector<std::uint32_t>& prims, int depth) {
         m_depth = std::max<std::int64_t>(m_depth, depth);
         if (prims.size() <= kLeafSize || depth >= kMaxDepth) {
@@ -117,14 +123,17 @@ private:
             };
             Entry stack[8 * (kMaxDepth + 1)];
             int top = 0;
-            if (const auto root = m_nodes[0].box.intersect(ray)) stack[top++] = {0, root->min};
+            if (!usable_ray(ray)) return false;
+            const BoxRay box_ray(ray);
+            const float root_t = box_ray.enter(m_nodes[0].box, closest);
+            if (root_t != kInfinity) stack[top++] = {0, root_t};
             while (top > 0) {
                 const Entry e = stack[--top];
-                if (!AnyHit && e.tmin > closest) continue;
+                if (e.tmin > BoxRay::enlarge(closest)) continue;  // a closer hit was found since it was pushed
                 const OctNode& node = m_nodes[e.node];
                 if (node.count != kInterior) {
                     for (std::uint32_t k = 0; k < node.count; ++k) {
-                        if (test_triangle<Test>(m_triangles, r, m_prims[node.first + k], closest, hit)) {
+                        if (test_triangle<Test>(m_triangles, r, node.first + k, closest, hit)) {
                             any = true;
                             if constexpr (AnyHit) return true;
                         }
@@ -134,10 +143,10 @@ private:
                 // Push the children the ray enters, farthest first, so the nearest is popped next.
                 std::array<Entry, 8> children;
                 int n = 0;
-                Ray clipped = ray;
-                clipped.tmax = closest;
-                for (std::uint32_t c = 0; c < 8; ++c)
-                    if (const auto t = m_nodes[node.first + c].box.intersect(clipped)) children[n++] = {node.first + c, t->min};
+                for (std::uint32_t c = 0; c < 8; ++c) {
+                    const float t = box_ray.enter(m_nodes[node.first + c].box, closest);
+                    if (t != kInfinity) children[n++] = {node.first + c, t};
+                }
                 for (int k = 1; k < n; ++k)  // insertion sort, farthest first: at most 8 entries
                     for (int m = k; m > 0 && children[m - 1].tmin < children[m].tmin; --m) std::swap(children[m - 1], children[m]);
                 for (int k = 0; k < n; ++k) stack[top++] = children[k];
@@ -146,11 +155,13 @@ private:
         });
     }
 
-    MeshTriangles m_triangles;
+    // Declared before m_triangles: build_tree fills them while m_triangles is being initialised.
+    std::chrono::steady_clock::time_point m_start;
     std::vector<OctNode> m_nodes;
-    std::vector<std::uint32_t> m_prims;
-    AccelStats m_stats;
+    std::vector<std::uint32_t> m_prims;  // only during the build
     std::int64_t m_depth = 0;
+    MeshTriangles m_triangles;
+    AccelStats m_stats;
 };
 
 }  // namespace
