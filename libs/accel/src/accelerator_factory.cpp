@@ -10,7 +10,7 @@ namespace rtlab {
 
 std::vector<std::string> accelerator_methods() {
     std::vector<std::string> methods = kd_tree_methods();
-    for (const char* m : {"bvh", "octree", "brute"}) methods.emplace_back(m);
+    for (const char* m : {"kd-three-way", "bvh", "octree", "brute"}) methods.emplace_back(m);
 #ifdef RTLAB_HAVE_EMBREE
     methods.emplace_back("embree");
 #endif
@@ -21,6 +21,7 @@ std::unique_ptr<TriangleAccelerator> make_accelerator(std::string_view method, c
                                                       const BuildOptions& options) {
     const auto kd = kd_tree_methods();
     if (std::find(kd.begin(), kd.end(), method) != kd.end()) return make_kd_tree(method, mesh, options);
+    if (method == "kd-three-way") return accel::make_kd_three_way(mesh, options);
     if (method == "bvh") return accel::make_bvh(mesh, options);
     if (method == "octree") return accel::make_octree(mesh, options);
     if (method == "brute") return accel::make_brute_force(mesh, options);
