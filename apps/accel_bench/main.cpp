@@ -35,7 +35,7 @@ struct Reference {
     std::string name;                 // "brute" or "embree"
     std::vector<std::size_t> sample;  // indices of the rays it answered
     std::vector<MeshHit> hits;        // hits[k] answers rays[sample[k]]
-    std::vector<bool> hit;
+    std::vector<unsigned char> hit;  // not vector<bool>: filled in parallel, one byte per ray
 };
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
                 arena.execute([&] {
                     tbb::parallel_for(std::size_t{0}, ref.sample.size(), [&](std::size_t k) {
                         MeshHit h;
-                        ref.hit[k] = reference_accel->intersect(set.rays[ref.sample[k]], h);
+                        ref.hit[k] = reference_accel->intersect(set.rays[ref.sample[k]], h) ? 1 : 0;
                         ref.hits[k] = h;
                     });
                 });
@@ -223,7 +223,7 @@ int main(int argc, char** argv) {
                     mismatches = 0;
                     for (std::size_t k = 0; k < ref.sample.size(); ++k) {
                         const std::size_t i = method == "brute" ? k : ref.sample[k];
-                        mismatches += mismatch(hits[i], hits[i].hit(), ref.hits[k], ref.hit[k]);
+                        mismatches += mismatch(hits[i], hits[i].hit(), ref.hits[k], ref.hit[k] != 0);
                     }
                 }
                 const double closest_mrays = static_cast<double>(rays->size()) / closest_s / 1e6;
