@@ -35,6 +35,98 @@ public:
     Builder(const KdBuildInput& input, KdStrategy strategy, const KdCostModel& cost, int max_depth)
         : m_input(input), m_strategy(strategy), m_cost(cost), m_max_depth(max_depth) {}
 
+    using Events = std::array<std::vector<kd::Event>, 3>;
+
+    /// kd-sah: the events are sorted once at the root and stay sorted on the way down.
+    std::unique_ptr<BuildNode> build_sah_root(std::vector<kd::Prim> prims, const AABB& box) const {
+        Events events;
+        for (auto& e : events) e.reserve(2 * prims.size());
+        for (std::size_t i = 0; i < prims.size(); ++i) kd::add_events(prims[i].box, static_cast<std::uint32_t>(i), events);
+        kd::sort_events(events);
+        return build_sah(std::move(prims), std::move(events), box, 0);
+    }
+
+    std::unique_ptr<BuildNode> build_sah(std::vector<kd::Prim> prims, Events events, const AABB& box, int depth) const {
+        auto node = std::make_unique<BuildNode>();
+        const kd::Split split = depth < m_max_depth && !prims.empty() ? kd::sweep_sah(events, prims.size(), box, m_cost) : kd::Split{};
+        auto make_leaf = [&] {
+            node->primitives.reserve(prims.size());
+            for (const kd::Prim& p : prims) node->primitives.push_back(p.index);
+            return std::move(node);
+        };
+        if (split.axis < 0) return make_leaf();
+        AABB below_box = box, above_box = box;
+        below_box.hi[split.axis] = split.position;
+        above_box.lo[split.axis] = split.position;
+        // Slots in each child (kNone: not there) and the clipped boxes of straddling primitives.
+        constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+        const std::size_t n = prims.size();
+        std::vector<std::uint32_t> below_slot(n, kNone), above_slot(n, kNone);
+        std::vector<kd::Prim> below, above;
+        std::vector<std::uint32_t> straddling;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const kd::Prim& p = prims[i];
+            const float lo = p.box.lo[split.axis], hi = p.box.hi[split.axis];
+            const bool to_below = (lo == split.position && hi == split.position) ? split.planar_left : hi <= split.position;
+            const bool to_above = (lo == split.position && hi == split.position) ? !split.planar_left : lo >= split.position;
+            if (to_below) {
+                below_slot[i] = static_cast<std::uint32_t>(below.size());
+                below.push_back(p);
+            } else if (to_above) {
+                above_slot[i] = static_cast<std::uint32_t>(above.size());
+                above.push_back(p);
+            } else {
+                straddling.push_back(i);
+            }
+        }
+        // Straddlers are clipped to each side; their old events are dropped and new ones generated.
+        Events below_new, above_new;
+        const std::size_t below_kept = below.size(), above_kept = above.size();
+        for (std::uint32_t i : straddling) {
+            const AABB b = clip(prims[i], below_box), a = clip(prims[i], above_box);
+            if (!b.is_empty()) {
+                kd::add_events(b, static_cast<std::uint32_t>(below.size()), below_new);
+                below.push_back({prims[i].index, b});
+            }
+            if (!a.is_empty()) {
+                kd::add_events(a, static_cast<std::uint32_t>(above.size()), above_new);
+                above.push_back({prims[i].index, a});
+            }
+        }
+        if (2 * (below.size() + above.size()) > 3 * n) return make_leaf();
+        kd::sort_events(below_new);
+        kd::sort_events(above_new);
+        Events below_events, above_events;
+        for (int axis = 0; axis < 3; ++axis) {
+            // A stable filter keeps the parent's order; the few new events are merged in.
+            std::vector<kd::Event> b, a;
+            b.reserve(2 * below_kept);
+            a.reserve(2 * above_kept);
+            for (const kd::Event& e : events[axis]) {
+                if (below_slot[e.slot] != kNone) b.push_back({e.position, e.type, below_slot[e.slot]});
+                else if (above_slot[e.slot] != kNone) a.push_back({e.position, e.type, above_slot[e.slot]});
+            }
+            below_events[axis].resize(b.size() + below_new[axis].size());
+            std::merge(b.begin(), b.end(), below_new[axis].begin(), below_new[axis].end(), below_events[axis].begin());
+            above_events[axis].resize(a.size() + above_new[axis].size());
+            std::merge(a.begin(), a.end(), above_new[axis].begin(), above_new[axis].end(), above_events[axis].begin());
+        }
+        Events().swap(events);
+        std::vector<kd::Prim>().swap(prims);
+        node->axis = split.axis;
+        node->split = split.position;
+        if (below.size() + above.size() > kParallelThreshold) {
+            tbb::task_group group;
+            group.run([&] { node->below = build_sah(std::move(below), std::move(below_events), below_box, depth + 1); });
+            node->above = build_sah(std::move(above), std::move(above_events), above_box, depth + 1);
+            group.wait();
+        } else {
+            node->below = build_sah(std::move(below), std::move(below_events), below_box, depth + 1);
+            node->above = build_sah(std::move(above), std::move(above_events), above_box, depth + 1);
+        }
+        return node;
+    }
+
     std::unique_ptr<BuildNode> build(std::vector<kd::Prim> prims, const AABB& box, int depth) const {
         auto node = std::make_unique<BuildNode>();
         const kd::Split split = depth < m_max_depth && !prims.empty() ? choose(prims, box, depth) : kd::Split{};
@@ -75,7 +167,7 @@ public:
 private:
     kd::Split choose(const std::vector<kd::Prim>& prims, const AABB& box, int depth) const {
         switch (m_strategy) {
-            case KdStrategy::sah: return kd::find_split_sah(prims, box, m_cost);
+            case KdStrategy::sah: break;  // built from sorted events by build_sah
             case KdStrategy::sah_binned: return kd::find_split_binned(prims, box, m_cost);
             case KdStrategy::sah_naive: return kd::find_split_naive(prims, box, m_cost);
             case KdStrategy::median: return kd::find_split_median(prims, box, depth);
@@ -191,7 +283,10 @@ KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const K
         std::min(60, 8 + static_cast<int>(std::round(1.3 * std::log2(std::max<std::size_t>(prims.size(), 1)))));
     Builder builder(input, strategy, cost, max_depth);
     std::unique_ptr<BuildNode> root;
-    auto run = [&] { root = builder.build(std::move(prims), out.bounds, 0); };
+    auto run = [&] {
+        root = strategy == KdStrategy::sah ? builder.build_sah_root(std::move(prims), out.bounds)
+                                           : builder.build(std::move(prims), out.bounds, 0);
+    };
     if (threads > 0) tbb::task_arena(threads).execute(run);
     else run();
 

@@ -4,7 +4,9 @@
 #include <rtlab/core/aabb.hpp>
 
 #include <cstdint>
+#include <array>
 #include <span>
+#include <vector>
 
 namespace rtlab::kd {
 
@@ -32,7 +34,21 @@ inline void area_ratios(const AABB& box, int axis, float position, float& p_left
     p_right = right.surface_area() * inv;
 }
 
-Split find_split_sah(std::span<const Prim> prims, const AABB& box, const KdCostModel& cost);
+/// A split event of the SAH sweep: where a primitive (slot in its node's list) starts, ends or lies flat.
+/// Sorted by position, then end < planar < start: at one position, primitives ending there leave the
+/// right side before those starting there join the left.
+enum EventType : std::uint8_t { kEnd = 0, kPlanar = 1, kStart = 2 };
+struct Event {
+    float position;
+    EventType type;
+    std::uint32_t slot;
+    bool operator<(const Event& o) const { return position < o.position || (position == o.position && type < o.type); }
+};
+/// Appends the events of one primitive box to the three axes' lists.
+void add_events(const AABB& box, std::uint32_t slot, std::array<std::vector<Event>, 3>& events);
+void sort_events(std::array<std::vector<Event>, 3>& events);
+/// The best SAH split from sorted events of n primitives; a leaf (axis < 0) when none beats it.
+Split sweep_sah(const std::array<std::vector<Event>, 3>& events, std::size_t n, const AABB& box, const KdCostModel& cost);
 Split find_split_binned(std::span<const Prim> prims, const AABB& box, const KdCostModel& cost);
 Split find_split_naive(std::span<const Prim> prims, const AABB& box, const KdCostModel& cost);
 Split find_split_median(std::span<const Prim> prims, const AABB& box, int depth);

@@ -1,50 +1,41 @@
-// Full SAH over every candidate plane: sorted split events swept once per axis (Wald and Havran 2006),
-// with planar primitives placed on the cheaper side. Events are sorted per node, so a build costs
-// O(N log^2 N); the sweep itself is linear.
+// Full SAH over every candidate plane (Wald and Havran 2006): split events sorted once at the root and
+// kept sorted down the tree, swept once per axis and node, with planar primitives placed on the cheaper
+// side. Only straddling primitives get new (clipped) events, which are sorted among themselves and merged.
 #include "kd_split.hpp"
 
 #include <algorithm>
-#include <vector>
 
 namespace rtlab::kd {
 
-namespace {
-// Sorted by position, then end < planar < start: at one position, primitives ending there leave the
-// right side before those starting there join the left.
-enum EventType : std::uint8_t { kEnd = 0, kPlanar = 1, kStart = 2 };
-struct Event {
-    float position;
-    EventType type;
-    bool operator<(const Event& o) const { return position < o.position || (position == o.position && type < o.type); }
-};
-}  // namespace
+void add_events(const AABB& box, std::uint32_t slot, std::array<std::vector<Event>, 3>& events) {
+    for (int axis = 0; axis < 3; ++axis) {
+        if (box.lo[axis] == box.hi[axis]) {
+            events[axis].push_back({box.lo[axis], kPlanar, slot});
+        } else {
+            events[axis].push_back({box.lo[axis], kStart, slot});
+            events[axis].push_back({box.hi[axis], kEnd, slot});
+        }
+    }
+}
 
-Split find_split_sah(std::span<const Prim> prims, const AABB& box, const KdCostModel& cost) {
+void sort_events(std::array<std::vector<Event>, 3>& events) {
+    for (auto& e : events) std::sort(e.begin(), e.end());
+}
+
+Split sweep_sah(const std::array<std::vector<Event>, 3>& events, std::size_t n, const AABB& box, const KdCostModel& cost) {
     Split best;
-    best.cost = cost.leaf_cost(prims.size());
-    const std::size_t n = prims.size();
-    if (box.surface_area() <= 0.0f) return {};
-    std::vector<Event> events;
-    events.reserve(2 * n);
+    best.cost = cost.leaf_cost(n);
+    if (!(box.surface_area() > 0.0f)) return {};
     for (int axis = 0; axis < 3; ++axis) {
         if (!(box.hi[axis] > box.lo[axis])) continue;
-        events.clear();
-        for (const Prim& p : prims) {
-            if (p.box.lo[axis] == p.box.hi[axis]) {
-                events.push_back({p.box.lo[axis], kPlanar});
-            } else {
-                events.push_back({p.box.lo[axis], kStart});
-                events.push_back({p.box.hi[axis], kEnd});
-            }
-        }
-        std::sort(events.begin(), events.end());
+        const std::vector<Event>& ev = events[axis];
         std::size_t n_left = 0, n_right = n;
-        for (std::size_t i = 0; i < events.size();) {
-            const float position = events[i].position;
+        for (std::size_t i = 0; i < ev.size();) {
+            const float position = ev[i].position;
             std::size_t ending = 0, planar = 0, starting = 0;
-            while (i < events.size() && events[i].position == position && events[i].type == kEnd) ++ending, ++i;
-            while (i < events.size() && events[i].position == position && events[i].type == kPlanar) ++planar, ++i;
-            while (i < events.size() && events[i].position == position && events[i].type == kStart) ++starting, ++i;
+            while (i < ev.size() && ev[i].position == position && ev[i].type == kEnd) ++ending, ++i;
+            while (i < ev.size() && ev[i].position == position && ev[i].type == kPlanar) ++planar, ++i;
+            while (i < ev.size() && ev[i].position == position && ev[i].type == kStart) ++starting, ++i;
             n_right -= planar + ending;
             if (position > box.lo[axis] && position < box.hi[axis]) {
                 float p_left, p_right;
