@@ -1,9 +1,13 @@
 #include <rtlab/accel/kd_tree.hpp>
+#include <rtlab/accel/mesh_shape.hpp>
+#include <rtlab/geometry/instance.hpp>
 #include <rtlab/core/error.hpp>
 
 #include <catch2/catch.hpp>
 
 #include "test_meshes.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 
@@ -135,4 +139,35 @@ TEST_CASE("a kd-tree over shapes of mixed kinds, itself a shape inside another t
     REQUIRE(outer.intersect(Ray{{90, 0, 0}, {1, 0, 0}}, far));
     CHECK(far.primitive == 999);
     CHECK_FALSE(outer.occluded(Ray{{2, 1, 5}, {0, 0, -1}}));  // between the shapes
+}
+
+TEST_CASE("a scene of meshes as a tree of trees: mesh shapes and their instances in a kd-tree", "[kd]") {
+    const auto sphere = std::make_shared<TriangleMesh>(test::icosphere(3));  // radius 1, 1280 triangles
+    const auto mesh = std::make_shared<MeshShape>(sphere);
+    std::vector<std::shared_ptr<const Shape>> objects;
+    objects.push_back(mesh);  // at the origin
+    for (int k = 1; k <= 4; ++k) {
+        // The same mesh three units apart along x, scaled by 0.5.
+        const Mat4 m = glm::scale(glm::translate(Mat4(1.0f), Vec3(3.0f * k, 0, 0)), Vec3(0.5f));
+        objects.push_back(std::make_shared<Instance>(mesh, m));
+    }
+    const KdShapeTree scene(objects);
+    CHECK(scene.bounds().hi.x == Approx(12.5f));
+    for (int k = 0; k <= 4; ++k) {
+        const float radius = k == 0 ? 1.0f : 0.5f;
+        const Ray down{{3.0f * k, 0.01f, 5.0f}, {0.0f, 0.0f, -1.0f}};
+        SurfaceHit h;
+        REQUIRE(scene.intersect(down, h));
+        INFO("object " << k);
+        CHECK(h.t == Approx(5.0f - radius).epsilon(0.02));  // the icosphere lies within 1.5% of the sphere
+        CHECK(h.point.x == Approx(3.0f * k).margin(0.02));
+        CHECK(h.geometric_normal.z > 0.9f);
+        CHECK(h.front_face);
+        CHECK(scene.occluded(down));
+    }
+    SurfaceHit h;
+    CHECK_FALSE(scene.intersect(Ray{{1.5f, 0.0f, 5.0f}, {0.0f, 0.0f, -1.0f}}, h));  // between the objects
+    // Along the row: the first object hit is the big sphere at the origin, entered at x = -1.
+    REQUIRE(scene.intersect(Ray{{-5.0f, 0.01f, 0.01f}, {1.0f, 0.0f, 0.0f}}, h));
+    CHECK(h.t == Approx(4.0f).epsilon(0.01));
 }
