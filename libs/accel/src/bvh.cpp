@@ -181,11 +181,9 @@ private:
                 for (;;) {
                     const BvhNode& node = m_nodes[index];
                     if (node.count > 0) {
-                        for (std::uint32_t k = 0; k < node.count; ++k) {
-                            if (test_triangle<Test>(m_triangles, r, node.offset_or_right + k, closest, hit)) {
-                                any = true;
-                                if constexpr (AnyHit) return true;
-                            }
+                        if (test_leaf<Test, AnyHit>(m_triangles, r, node.offset_or_right, node.count, closest, hit)) {
+                            any = true;
+                            if constexpr (AnyHit) return true;
                         }
                         break;
                     }

@@ -135,14 +135,12 @@ private:
             if (t_root != kInfinity) stack[top++] = {0, t_root};
             while (top > 0) {
                 const Entry e = stack[--top];
-                if (e.t > closest) continue;
+                if (e.t > BoxRay::enlarge(closest)) continue;  // a closer hit was found since it was pushed
                 const ThreeWayNode& node = m_nodes[e.node];
                 if (node.children == 0) {
-                    for (std::uint32_t k = 0; k < node.count; ++k) {
-                        if (test_triangle<Test>(m_triangles, r, node.first + k, closest, hit)) {
-                            any = true;
-                            if constexpr (AnyHit) return true;
-                        }
+                    if (test_leaf<Test, AnyHit>(m_triangles, r, node.first, node.count, closest, hit)) {
+                        any = true;
+                        if constexpr (AnyHit) return true;
                     }
                     continue;
                 }

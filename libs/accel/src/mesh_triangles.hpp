@@ -89,6 +89,20 @@ inline bool test_triangle(const MeshTriangles& tris, const TriangleRay<Test>& r,
     return true;
 }
 
+/// Tests the leaf entries [first, first + count): true on a hit; with AnyHit it stops at the first one.
+template <TriangleTest Test, bool AnyHit>
+inline bool test_leaf(const MeshTriangles& tris, const TriangleRay<Test>& r, std::uint32_t first, std::uint32_t count,
+                      float& closest, MeshHit& hit) {
+    bool any = false;
+    for (std::uint32_t k = 0; k < count; ++k) {
+        if (test_triangle<Test>(tris, r, first + k, closest, hit)) {
+            any = true;
+            if constexpr (AnyHit) return true;
+        }
+    }
+    return any;
+}
+
 /// Calls f.template operator()<Test>() for the runtime test: one switch per query, not per triangle.
 template <class F>
 decltype(auto) dispatch_triangle_test(TriangleTest test, F&& f) {

@@ -132,11 +132,9 @@ private:
                 if (e.tmin > BoxRay::enlarge(closest)) continue;  // a closer hit was found since it was pushed
                 const OctNode& node = m_nodes[e.node];
                 if (node.count != kInterior) {
-                    for (std::uint32_t k = 0; k < node.count; ++k) {
-                        if (test_triangle<Test>(m_triangles, r, node.first + k, closest, hit)) {
-                            any = true;
-                            if constexpr (AnyHit) return true;
-                        }
+                    if (test_leaf<Test, AnyHit>(m_triangles, r, node.first, node.count, closest, hit)) {
+                        any = true;
+                        if constexpr (AnyHit) return true;
                     }
                     continue;
                 }
