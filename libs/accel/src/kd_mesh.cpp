@@ -1,8 +1,11 @@
 // kd-trees over a mesh's triangles: the shared builder with perfect splits (triangles clipped to the
-// node box), and the shared traversal with the leaf test of the chosen triangle method.
+// node box), and the shared traversal with leaves tested four triangles at a time by the chosen method.
 #include <rtlab/accel/kd_tree.hpp>
 
+#include "kd_packets.hpp"
 #include "mesh_triangles.hpp"
+
+#include <span>
 
 namespace rtlab {
 
@@ -10,39 +13,39 @@ namespace {
 
 class KdMeshAccelerator final : public TriangleAccelerator {
 public:
-    KdMeshAccelerator(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options)
-        : m_name(kd_strategy_name(strategy)), m_tree(build(strategy, mesh, options)),
-          m_triangles(mesh, options.triangle_test, leaf_order(m_tree)) {
-        m_tree.stats.bytes = static_cast<std::int64_t>(m_tree.nodes.size() * sizeof(KdNode) +
-                                                       m_tree.primitive_indices.size() * sizeof(std::uint32_t) +
-                                                       m_triangles.bytes());
+    KdMeshAccelerator(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options, const KdCostModel& cost)
+        : m_name(kd_strategy_name(strategy)), m_tree(build(strategy, mesh, options, cost)),
+          m_packets(options.triangle_test) {
+        lay_out_leaves(mesh);
+        m_tree.stats.bytes = static_cast<std::int64_t>(m_tree.nodes.size() * sizeof(KdNode) + m_packets.bytes());
     }
 
     std::string_view name() const override { return m_name; }
 
-    bool intersect(const Ray& ray, MeshHit& hit) const override {
-        return accel::dispatch_triangle_test(m_triangles.test(), [&]<TriangleTest Test>() {
-            const accel::TriangleRay<Test> r(ray);
-            return kd_traverse<false>(m_tree, ray, [&](std::uint32_t i, float& closest) {
-                return accel::test_triangle<Test>(m_triangles, r, i, closest, hit);
-            });
-        });
-    }
+    bool intersect(const Ray& ray, MeshHit& hit) const override { return trace<false>(ray, hit); }
 
     bool occluded(const Ray& ray) const override {
-        return accel::dispatch_triangle_test(m_triangles.test(), [&]<TriangleTest Test>() {
-            const accel::TriangleRay<Test> r(ray);
-            MeshHit ignored;
-            return kd_traverse<true>(m_tree, ray, [&](std::uint32_t i, float& closest) {
-                return accel::test_triangle<Test>(m_triangles, r, i, closest, ignored);
-            });
-        });
+        MeshHit ignored;
+        return trace<true>(ray, ignored);
     }
 
     AccelStats stats() const override { return m_tree.stats; }
 
 private:
-    static KdTreeData build(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options) {
+    template <bool AnyHit>
+    bool trace(const Ray& ray, MeshHit& hit) const {
+        return accel::dispatch_triangle_test(m_packets.test(), [&]<TriangleTest Test>() {
+            const kd::PacketRay<Test> r(ray);
+            if (!r.valid()) return false;
+            return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest) {
+                return kd::test_packets<Test, AnyHit>(m_packets, r, leaf.primitive_offset(), leaf.primitive_count(),
+                                                      closest, hit);
+            });
+        });
+    }
+
+    static KdTreeData build(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options,
+                            const KdCostModel& cost) {
         KdBuildInput input;
         input.bounds.reserve(mesh.triangle_count());
         for (std::size_t i = 0; i < mesh.triangle_count(); ++i)
@@ -50,32 +53,29 @@ private:
         input.clip = [&mesh](std::uint32_t i, const AABB& box) {
             return accel::clip_triangle(mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2), box);
         };
-        return build_kd_tree(input, strategy, KdCostModel{}, options.threads);
+        return build_kd_tree(input, strategy, cost, options.threads);
     }
 
-    // Renumbers the leaves so that every leaf (one-primitive leaves too) refers to consecutive entries of
-    // the leaf-ordered triangle array; returns the mesh triangle of each entry.
-    static std::vector<std::uint32_t> leaf_order(KdTreeData& tree) {
-        std::vector<std::uint32_t> order;
-        order.reserve(tree.primitive_indices.size() + tree.nodes.size() / 2);
-        for (KdNode& node : tree.nodes) {
-            if (!node.is_leaf()) continue;
+    // Copies each leaf's triangles into consecutive packets (one cache-line run per leaf for incoherent
+    // rays) and renumbers the leaf to (packet count, first packet). The statistics keep triangle counts.
+    void lay_out_leaves(const TriangleMesh& mesh) {
+        for (KdNode& node : m_tree.nodes) {
+            if (!node.is_leaf() || node.primitive_count() == 0) continue;
             const std::uint32_t count = node.primitive_count();
-            const auto first = static_cast<std::uint32_t>(order.size());
-            if (count == 1) order.push_back(node.primitive_offset());
-            for (std::uint32_t k = 0; count > 1 && k < count; ++k)
-                order.push_back(tree.primitive_indices[node.primitive_offset() + k]);
-            // One-primitive leaves name their entry directly; the others go through the identity array.
-            node = KdNode::leaf(count, first);
+            const std::uint32_t one = node.primitive_offset();
+            const std::span<const std::uint32_t> triangles =
+                count == 1 ? std::span<const std::uint32_t>(&one, 1)
+                           : std::span<const std::uint32_t>(m_tree.primitive_indices.data() + node.primitive_offset(), count);
+            const std::uint32_t first = m_packets.add_leaf(mesh, triangles);
+            node = KdNode::leaf((count + 3) / 4, first);
         }
-        tree.primitive_indices.resize(order.size());
-        for (std::size_t k = 0; k < order.size(); ++k) tree.primitive_indices[k] = static_cast<std::uint32_t>(k);
-        return order;
+        std::vector<std::uint32_t>().swap(m_tree.primitive_indices);
+        m_packets.shrink();
     }
 
     std::string m_name;
     KdTreeData m_tree;
-    accel::MeshTriangles m_triangles;
+    kd::TrianglePackets m_packets;
 };
 
 }  // namespace
@@ -86,7 +86,12 @@ std::vector<std::string> kd_tree_methods() {
 
 std::unique_ptr<TriangleAccelerator> make_kd_tree(std::string_view method, const TriangleMesh& mesh,
                                                   const BuildOptions& options) {
-    return std::make_unique<KdMeshAccelerator>(parse_kd_strategy(method), mesh, options);
+    return make_kd_tree(method, mesh, options, kd_mesh_cost_model());
+}
+
+std::unique_ptr<TriangleAccelerator> make_kd_tree(std::string_view method, const TriangleMesh& mesh,
+                                                  const BuildOptions& options, const KdCostModel& cost) {
+    return std::make_unique<KdMeshAccelerator>(parse_kd_strategy(method), mesh, options, cost);
 }
 
 }  // namespace rtlab

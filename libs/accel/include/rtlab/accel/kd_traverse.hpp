@@ -3,86 +3,81 @@
 #include <rtlab/accel/kd_node.hpp>
 #include <rtlab/core/ray.hpp>
 
+#include <bit>
+#include <cmath>
 #include <cstdint>
 
 namespace rtlab {
 
-/// Walks the tree front to back along the ray. `test(primitive, closest)` tests one primitive against the
-/// ray restricted to (ray.tmin, closest), returns true on a hit and, for closest-hit queries, lowers
-/// `closest` to the hit's t. With AnyHit the walk stops at the first hit.
+/// Walks the tree front to back along the ray. `test_leaf(leaf, closest)` tests the primitives of a
+/// non-empty leaf node against the ray restricted to (ray.tmin, closest), returns true on a hit and, for
+/// closest-hit queries, lowers `closest` to the hit's t. With AnyHit the walk stops at the first hit.
 ///
-/// Exact where naive traversals are not: a direction component of +0 or -0 visits the side holding the
-/// origin, a ray lying in a split plane visits both children, tmin = tmax and negative tmin work, and a
-/// NaN ray misses (the root box test rejects it).
-template <bool AnyHit, class PrimitiveTest>
-bool kd_traverse(const KdTreeData& tree, const Ray& ray, PrimitiveTest&& test) {
+/// Exact where naive traversals are not: the near child is chosen by the sign bit of the direction, so a
+/// component of +0 or -0 (an infinite inverse) visits the side holding the origin; a ray lying in a split
+/// plane gets a NaN plane distance, which no comparison accepts, and visits both children (primitives
+/// touching the plane may sit on either side); tmin = tmax and negative tmin work; a NaN ray misses (the
+/// root box test rejects it).
+/// c ? a : b by bit masks, so that the compiler emits no branch.
+inline float kd_select(bool c, float a, float b) {
+    const std::uint32_t mask = 0u - static_cast<std::uint32_t>(c);
+    return std::bit_cast<float>((std::bit_cast<std::uint32_t>(a) & mask) | (std::bit_cast<std::uint32_t>(b) & ~mask));
+}
+
+template <bool AnyHit, class LeafTest>
+bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
     if (tree.nodes.empty()) return false;
     const auto range = tree.bounds.intersect(ray);
     if (!range) return false;
     float tmin = range->min, tmax = range->max;
     float closest = ray.tmax;
-    const Vec3 inv_dir = 1.0f / ray.direction;
+    float origin[3], inv_dir[3];
+    std::uint32_t flip[3];  // all ones where the above child comes first (a negative direction, -0 too)
+    for (int a = 0; a < 3; ++a) {
+        origin[a] = ray.origin[a];
+        inv_dir[a] = 1.0f / ray.direction[a];
+        flip[a] = std::signbit(ray.direction[a]) ? ~0u : 0u;
+    }
 
     struct Entry {
         std::uint32_t node;
         float tmin, tmax;
     };
-    Entry stack[64];
+    Entry stack[64];  // deeper than any tree the builders make (their depth cap is 60)
     int top = 0;
+    const KdNode* nodes = tree.nodes.data();
     std::uint32_t index = 0;
     bool hit = false;
     for (;;) {
-        if constexpr (!AnyHit) {
-            if (closest < tmin) break;  // the closest hit lies before everything still to visit
-        }
-        const KdNode& node = tree.nodes[index];
+        const KdNode node = nodes[index];
         if (!node.is_leaf()) {
+            // Near/far, which sides [tmin, tmax] reaches and the new interval, all without branches: the
+            // three cases (near only, far only, both) are equally likely for incoherent rays and would
+            // defeat branch prediction. A NaN plane distance (ray in the plane) reaches both sides, each
+            // over the whole interval.
             const int axis = node.axis();
-            const float split = node.split();
-            const float o = ray.origin[axis], d = ray.direction[axis];
+            const float t_plane = (node.split() - origin[axis]) * inv_dir[axis];
             const std::uint32_t below = index + 1, above = node.above_child();
-            if (d == 0.0f) {
-                if (o < split) index = below;
-                else if (o > split) index = above;
-                else {  // lying in the split plane: primitives touching it may sit on either side
-                    stack[top++] = {above, tmin, tmax};
-                    index = below;
-                }
-                continue;
-            }
-            const float t_plane = (split - o) * inv_dir[axis];
-            const std::uint32_t near = d > 0.0f ? below : above, far = d > 0.0f ? above : below;
-            if (t_plane > tmax) {
-                index = near;
-            } else if (t_plane < tmin) {
-                index = far;
-            } else {
-                stack[top++] = {far, t_plane, tmax};
-                index = near;
-                tmax = t_plane;
-            }
+            const std::uint32_t near = below ^ ((below ^ above) & flip[axis]), far = near ^ below ^ above;
+            const bool reaches_near = !(t_plane < tmin), reaches_far = !(t_plane > tmax);
+            stack[top] = {far, t_plane > tmin ? t_plane : tmin, tmax};
+            top += reaches_near & reaches_far;
+            tmax = kd_select(reaches_near, t_plane < tmax ? t_plane : tmax, tmax);
+            index = far ^ ((near ^ far) & (0u - static_cast<std::uint32_t>(reaches_near)));
             continue;
         }
-        const std::uint32_t count = node.primitive_count();
-        if (count == 1) {
-            if (test(node.primitive_offset(), closest)) {
-                hit = true;
-                if constexpr (AnyHit) return true;
-            }
-        } else {
-            const std::uint32_t* primitives = tree.primitive_indices.data() + node.primitive_offset();
-            for (std::uint32_t i = 0; i < count; ++i) {
-                if (test(primitives[i], closest)) {
-                    hit = true;
-                    if constexpr (AnyHit) return true;
-                }
-            }
+        if (node.primitive_count() != 0 && test_leaf(node, closest)) {
+            hit = true;
+            if constexpr (AnyHit) return true;
         }
         if (top == 0) break;
         --top;
         index = stack[top].node;
         tmin = stack[top].tmin;
         tmax = stack[top].tmax;
+        if constexpr (!AnyHit) {
+            if (closest < tmin) break;  // the closest hit lies before everything still to visit
+        }
     }
     return hit;
 }
