@@ -3,7 +3,6 @@
 #include <rtlab/accel/kd_node.hpp>
 #include <rtlab/core/ray.hpp>
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -18,12 +17,6 @@ namespace rtlab {
 /// plane gets a NaN plane distance, which no comparison accepts, and visits both children (primitives
 /// touching the plane may sit on either side); tmin = tmax and negative tmin work; a NaN ray misses (the
 /// root box test rejects it).
-/// c ? a : b by bit masks, so that the compiler emits no branch.
-inline float kd_select(bool c, float a, float b) {
-    const std::uint32_t mask = 0u - static_cast<std::uint32_t>(c);
-    return std::bit_cast<float>((std::bit_cast<std::uint32_t>(a) & mask) | (std::bit_cast<std::uint32_t>(b) & ~mask));
-}
-
 template <bool AnyHit, class LeafTest>
 bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
     if (tree.nodes.empty()) return false;
@@ -51,19 +44,24 @@ bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
     for (;;) {
         const KdNode node = nodes[index];
         if (!node.is_leaf()) {
-            // Near/far, which sides [tmin, tmax] reaches and the new interval, all without branches: the
-            // three cases (near only, far only, both) are equally likely for incoherent rays and would
-            // defeat branch prediction. A NaN plane distance (ray in the plane) reaches both sides, each
-            // over the whole interval.
+            // The next node follows from the node alone while the branch below is predicted: the near child,
+            // unless the plane lies before the interval. The step then waits on the node load only, not on the
+            // plane distance. [[unlikely]] is there to keep the branch a branch (it is taken for about a third
+            // of the nodes): GCC otherwise makes it branch-free, which chains every step on the division and
+            // the comparison and was 12-17% slower on random rays (bunny, 1 thread). A NaN plane distance (ray
+            // in the plane) fails every comparison: both children are visited, each over the whole interval.
             const int axis = node.axis();
             const float t_plane = (node.split() - origin[axis]) * inv_dir[axis];
             const std::uint32_t below = index + 1, above = node.above_child();
             const std::uint32_t near = below ^ ((below ^ above) & flip[axis]), far = near ^ below ^ above;
-            const bool reaches_near = !(t_plane < tmin), reaches_far = !(t_plane > tmax);
+            if (t_plane < tmin) [[unlikely]] {  // the near side lies wholly behind the interval
+                index = far;
+                continue;
+            }
             stack[top] = {far, t_plane > tmin ? t_plane : tmin, tmax};
-            top += reaches_near & reaches_far;
-            tmax = kd_select(reaches_near, t_plane < tmax ? t_plane : tmax, tmax);
-            index = far ^ ((near ^ far) & (0u - static_cast<std::uint32_t>(reaches_near)));
+            top += !(t_plane > tmax);
+            tmax = t_plane < tmax ? t_plane : tmax;
+            index = near;
             continue;
         }
         if (node.primitive_count() != 0 && test_leaf(node, closest)) {
