@@ -104,7 +104,9 @@ int main(int argc, char** argv) {
     std::size_t random_count = 1000000, sample_size = 2000;
     std::string hits_out, csv_path, triangle = "watertight";
     app.add_option("--mesh", mesh_path, "mesh file (.ply or .obj)")->required();
-    app.add_option("--method", methods, "kd-sah, kd-sah-binned, kd-sah-naive, kd-median, kd-midpoint, bvh, octree, brute, embree");
+    std::string method_list;
+    for (const std::string& m : accelerator_methods()) method_list += (method_list.empty() ? "" : ", ") + m;
+    app.add_option("--method", methods, method_list + " (repeatable; default: kd-sah, kd-sah-binned, bvh and embree)");
     app.add_option("--rays", ray_specs, "primary, random or a ray file (repeatable; default: primary and random)");
     app.add_option("--threads", threads, "threads for building and tracing (default: all)")->check(CLI::NonNegativeNumber);
     app.add_option("--runs", runs, "timed runs per measurement (median; default 5)")->check(CLI::PositiveNumber);
