@@ -69,10 +69,38 @@ TEST_CASE("kd nodes are 8 bytes and pack axis and counts", "[kd]") {
     CHECK(interior.axis() == 2);
     CHECK(interior.split() == 1.5f);
     CHECK(interior.above_child() == 12345);
+    CHECK(interior.empty_children() == 0);
+    const KdNode flagged = KdNode::interior(1, -2.0f, KdNode::kMaxIndex, true, false);
+    CHECK(flagged.axis() == 1);
+    CHECK(flagged.above_child() == KdNode::kMaxIndex);
+    CHECK(flagged.empty_children() == 1);
+    CHECK(KdNode::interior(0, 0.0f, 7, false, true).empty_children() == 2);
     const KdNode leaf = KdNode::leaf(7, 99);
     CHECK(leaf.is_leaf());
     CHECK(leaf.primitive_count() == 7);
     CHECK(leaf.primitive_offset() == 99);
+}
+
+TEST_CASE("interior nodes flag exactly their empty children", "[kd]") {
+    const TriangleMesh sphere = test::icosphere(4);  // hollow: the SAH cuts off empty space inside and out
+    KdBuildInput input;
+    for (std::size_t i = 0; i < sphere.triangle_count(); ++i) input.bounds.push_back(sphere.triangle_bounds(i));
+    for (KdStrategy s : {KdStrategy::sah, KdStrategy::sah_binned, KdStrategy::median, KdStrategy::midpoint}) {
+        const KdTreeData tree = build_kd_tree(input, s);
+        auto empty_leaf = [&](std::uint32_t i) { return tree.nodes[i].is_leaf() && tree.nodes[i].primitive_count() == 0; };
+        int flagged = 0, wrong = 0;
+        for (std::uint32_t i = 0; i < tree.nodes.size(); ++i) {
+            const KdNode& n = tree.nodes[i];
+            if (n.is_leaf()) continue;
+            const std::uint32_t expected = (empty_leaf(i + 1) ? 1u : 0u) | (empty_leaf(n.above_child()) ? 2u : 0u);
+            if (n.empty_children() != expected) ++wrong;
+            if (expected != 0) ++flagged;
+        }
+        INFO(kd_strategy_name(s) << ": " << flagged << " interior nodes with an empty child, " << tree.stats.empty_leaves
+                                 << " empty leaves");
+        CHECK(wrong == 0);
+        CHECK(flagged == tree.stats.empty_leaves);  // an empty leaf is never the root here
+    }
 }
 
 TEST_CASE("the cost model validates its constants", "[kd]") {

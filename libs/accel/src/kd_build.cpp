@@ -215,7 +215,7 @@ struct Flattener {
     double flatten(const BuildNode& node, const AABB& box, int depth) {
         max_depth = std::max<std::int64_t>(max_depth, depth);
         const auto index = static_cast<std::uint32_t>(out.nodes.size());
-        if (out.nodes.size() >= KdNode::kMaxIndex) throw Error("kd-tree: more than 2^30 nodes");
+        if (out.nodes.size() >= KdNode::kMaxIndex) throw Error("kd-tree: more than 2^28 nodes");
         if (node.axis < 0) {
             const auto count = static_cast<std::uint32_t>(node.primitives.size());
             ++leaves;
@@ -235,7 +235,8 @@ struct Flattener {
         above_box.lo[node.axis] = node.split;
         const double below_cost = flatten(*node.below, below_box, depth + 1);
         const auto above_index = static_cast<std::uint32_t>(out.nodes.size());
-        out.nodes[index] = KdNode::interior(node.axis, node.split, above_index);
+        auto empty = [](const BuildNode& child) { return child.axis < 0 && child.primitives.empty(); };
+        out.nodes[index] = KdNode::interior(node.axis, node.split, above_index, empty(*node.below), empty(*node.above));
         const double above_cost = flatten(*node.above, above_box, depth + 1);
         const double area = box.surface_area();
         if (!(area > 0.0)) return cost.traversal() + below_cost + above_cost;

@@ -9,14 +9,19 @@
 namespace rtlab {
 
 /// \brief Interior node: split position, axis, index of the above child (the below child is the next
-/// node). Leaf: primitive count and either the one primitive or an offset into the index array.
-/// The 2 low bits of m_bits hold the axis (0..2) or 3 for a leaf; the 30 high bits the above child or count.
+/// node) and which children are empty leaves (the traversal then never visits them). Leaf: primitive
+/// count and either the one primitive or an offset into the index array.
+/// The 2 low bits of m_bits hold the axis (0..2) or 3 for a leaf. A leaf's 30 high bits hold its count;
+/// an interior node's bit 2 says the below child is empty, bit 3 the above child, and its 28 high bits
+/// hold the above child.
 class KdNode {
 public:
-    static KdNode interior(int axis, float split, std::uint32_t above_child) {
+    static KdNode interior(int axis, float split, std::uint32_t above_child, bool below_empty = false,
+                           bool above_empty = false) {
         KdNode n;
         n.m_split = split;
-        n.m_bits = (above_child << 2) | static_cast<std::uint32_t>(axis);
+        n.m_bits = (above_child << 4) | (static_cast<std::uint32_t>(above_empty) << 3) |
+                   (static_cast<std::uint32_t>(below_empty) << 2) | static_cast<std::uint32_t>(axis);
         return n;
     }
     static KdNode leaf(std::uint32_t count, std::uint32_t first_or_offset) {
@@ -29,12 +34,14 @@ public:
     bool is_leaf() const { return (m_bits & 3u) == 3u; }
     int axis() const { return static_cast<int>(m_bits & 3u); }
     float split() const { return m_split; }
-    std::uint32_t above_child() const { return m_bits >> 2; }
+    std::uint32_t above_child() const { return m_bits >> 4; }
+    /// Bit 0: the below child is an empty leaf; bit 1: the above child is.
+    std::uint32_t empty_children() const { return (m_bits >> 2) & 3u; }
     std::uint32_t primitive_count() const { return m_bits >> 2; }
     /// For a leaf with one primitive, the primitive itself; otherwise an offset into the index array.
     std::uint32_t primitive_offset() const { return m_offset; }
 
-    static constexpr std::uint32_t kMaxIndex = (1u << 30) - 1;
+    static constexpr std::uint32_t kMaxIndex = (1u << 28) - 1;
 
 private:
     union {
