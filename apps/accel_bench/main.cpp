@@ -184,11 +184,12 @@ int main(int argc, char** argv) {
         if (!csv_path.empty()) {
             csv.emplace(fmt::output_file(csv_path));
             csv->print("method,mesh,triangles,threads,build_s,nodes,leaves,empty_leaves,max_depth,mean_leaf_prims,bytes,"
-                       "sah_cost,ray_set,rays,closest_mrays_s,anyhit_mrays_s,mismatches,triangle_test,reference\n");
+                       "sah_cost,ray_set,rays,closest_mrays_s,anyhit_mrays_s,mismatches,triangle_test,reference,"
+                       "bytes_per_triangle\n");
         }
-        fmt::print("{:<14} {:>9} {:>9} {:>9} {:>6} {:>6} {:>11} {:>9} {:<10} {:>9} {:>10} {:>10} {:>10}\n", "method",
-                   "build_s", "nodes", "leaves", "depth", "leaf", "bytes", "sah", "rays", "count", "closest", "any-hit",
-                   "mismatch");
+        fmt::print("{:<14} {:>9} {:>9} {:>9} {:>6} {:>6} {:>11} {:>6} {:>9} {:<10} {:>9} {:>10} {:>10} {:>10}\n", "method",
+                   "build_s", "nodes", "leaves", "depth", "leaf", "bytes", "B/tri", "sah", "rays", "count", "closest",
+                   "any-hit", "mismatch");
         const std::string mesh_name = std::filesystem::path(mesh_path).filename().string();
         bool hits_written = false;
         for (const auto& method : methods) {
@@ -203,6 +204,10 @@ int main(int argc, char** argv) {
             }
             const double build_s = median(build_times);
             const AccelStats st = accel->stats();
+            // The structure's own bytes (nodes, indices, leaf layouts) per triangle of the mesh.
+            const double bytes_per_triangle =
+                st.bytes < 0 || mesh.triangle_count() == 0 ? -1.0
+                                                           : static_cast<double>(st.bytes) / static_cast<double>(mesh.triangle_count());
             for (std::size_t s = 0; s < sets.size(); ++s) {
                 const RaySet& set = sets[s];
                 const Reference& ref = references[s];
@@ -230,15 +235,16 @@ int main(int argc, char** argv) {
                 }
                 const double closest_mrays = static_cast<double>(rays->size()) / closest_s / 1e6;
                 const double any_mrays = static_cast<double>(rays->size()) / any_s / 1e6;
-                fmt::print("{:<14} {:>9.4f} {:>9} {:>9} {:>6} {:>6} {:>11} {:>9} {:<10} {:>9} {:>10.3f} {:>10.3f} {:>10}\n",
+                fmt::print("{:<14} {:>9.4f} {:>9} {:>9} {:>6} {:>6} {:>11} {:>6} {:>9} {:<10} {:>9} {:>10.3f} {:>10.3f} {:>10}\n",
                            method, build_s, field(st.nodes), field(st.leaves), field(st.max_depth), field(st.mean_leaf_primitives, "{:.2f}"),
-                           field(st.bytes), field(st.sah_cost, "{:.2f}"), set.name, rays->size(), closest_mrays, any_mrays, field(mismatches));
+                           field(st.bytes), field(bytes_per_triangle, "{:.1f}"), field(st.sah_cost, "{:.2f}"), set.name, rays->size(),
+                           closest_mrays, any_mrays, field(mismatches));
                 if (csv)
-                    csv->print("{},{},{},{},{:.6g},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{},{},{}\n", method, mesh_name,
+                    csv->print("{},{},{},{},{:.6g},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{},{},{},{}\n", method, mesh_name,
                                mesh.triangle_count(), thread_count, build_s, field(st.nodes), field(st.leaves),
                                field(st.empty_leaves), field(st.max_depth), field(st.mean_leaf_primitives), field(st.bytes),
                                field(st.sah_cost), set.name, rays->size(), closest_mrays, any_mrays, field(mismatches),
-                               to_string(options.triangle_test), ref.name);
+                               to_string(options.triangle_test), ref.name, field(bytes_per_triangle, "{:.2f}"));
                 // Brute force traced only the sample, so its records do not answer the whole set.
                 if (!hits_out.empty() && !hits_written && method != "brute") {
                     write_hit_file(hits_out, hits);
