@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <fmt/format.h>
 #include <fmt/os.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -104,9 +105,9 @@ int main(int argc, char** argv) {
     std::size_t random_count = 1000000, sample_size = 2000;
     std::string hits_out, csv_path, triangle = "watertight";
     app.add_option("--mesh", mesh_path, "mesh file (.ply or .obj)")->required();
-    std::string method_list;
-    for (const std::string& m : accelerator_methods()) method_list += (method_list.empty() ? "" : ", ") + m;
-    app.add_option("--method", methods, method_list + " (repeatable; default: kd-sah, kd-sah-binned, bvh and embree)");
+    app.add_option("--method", methods,
+                   fmt::format("{} (repeatable; default: kd-sah, kd-sah-binned, bvh and embree)",
+                               fmt::join(accelerator_methods(), ", ")));
     app.add_option("--rays", ray_specs, "primary, random or a ray file (repeatable; default: primary and random)");
     app.add_option("--threads", threads, "threads for building and tracing (default: all)")->check(CLI::NonNegativeNumber);
     app.add_option("--runs", runs, "timed runs per measurement (median; default 5)")->check(CLI::PositiveNumber);
