@@ -9,6 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace rtlab;
@@ -68,11 +69,11 @@ TEST_CASE("kd nodes are 8 bytes and pack axis and counts", "[kd]") {
     CHECK_FALSE(interior.is_leaf());
     CHECK(interior.axis() == 2);
     CHECK(interior.split() == 1.5f);
-    CHECK(interior.above_child() == 12345);
+    CHECK(interior.children() == 12345);
     CHECK(interior.empty_children() == 0);
     const KdNode flagged = KdNode::interior(1, -2.0f, KdNode::kMaxIndex, true, false);
     CHECK(flagged.axis() == 1);
-    CHECK(flagged.above_child() == KdNode::kMaxIndex);
+    CHECK(flagged.children() == KdNode::kMaxIndex);
     CHECK(flagged.empty_children() == 1);
     CHECK(KdNode::interior(0, 0.0f, 7, false, true).empty_children() == 2);
     const KdNode leaf = KdNode::leaf(7, 99);
@@ -81,25 +82,38 @@ TEST_CASE("kd nodes are 8 bytes and pack axis and counts", "[kd]") {
     CHECK(leaf.primitive_offset() == 99);
 }
 
-TEST_CASE("interior nodes flag exactly their empty children", "[kd]") {
+TEST_CASE("interior nodes flag exactly their empty children and keep siblings in one cache line", "[kd]") {
     const TriangleMesh sphere = test::icosphere(4);  // hollow: the SAH cuts off empty space inside and out
     KdBuildInput input;
     for (std::size_t i = 0; i < sphere.triangle_count(); ++i) input.bounds.push_back(sphere.triangle_bounds(i));
     for (KdStrategy s : {KdStrategy::sah, KdStrategy::sah_binned, KdStrategy::median, KdStrategy::midpoint}) {
         const KdTreeData tree = build_kd_tree(input, s);
         auto empty_leaf = [&](std::uint32_t i) { return tree.nodes[i].is_leaf() && tree.nodes[i].primitive_count() == 0; };
-        int flagged = 0, wrong = 0;
+        int flagged = 0, wrong = 0, odd = 0;
+        std::vector<int> parents(tree.nodes.size(), 0);
         for (std::uint32_t i = 0; i < tree.nodes.size(); ++i) {
             const KdNode& n = tree.nodes[i];
             if (n.is_leaf()) continue;
-            const std::uint32_t expected = (empty_leaf(i + 1) ? 1u : 0u) | (empty_leaf(n.above_child()) ? 2u : 0u);
+            const std::uint32_t below = n.children();
+            REQUIRE(below + 1 < tree.nodes.size());
+            if (below % 2 != 0) ++odd;
+            ++parents[below];
+            ++parents[below + 1];
+            const std::uint32_t expected = (empty_leaf(below) ? 1u : 0u) | (empty_leaf(below + 1) ? 2u : 0u);
             if (n.empty_children() != expected) ++wrong;
             if (expected != 0) ++flagged;
         }
         INFO(kd_strategy_name(s) << ": " << flagged << " interior nodes with an empty child, " << tree.stats.empty_leaves
                                  << " empty leaves");
         CHECK(wrong == 0);
+        CHECK(odd == 0);  // pairs start at even indices: 16-byte aligned, never split across cache lines
         CHECK(flagged == tree.stats.empty_leaves);  // an empty leaf is never the root here
+        // Every node but the root and its padding has exactly one parent, and the padding is an empty leaf.
+        CHECK(parents[0] == 0);
+        CHECK(parents[1] == 0);
+        CHECK(empty_leaf(1));
+        CHECK(std::count(parents.begin() + 2, parents.end(), 1) == static_cast<long>(tree.nodes.size()) - 2);
+        CHECK(tree.stats.nodes == static_cast<std::int64_t>(tree.nodes.size()) - 1);
     }
 }
 

@@ -209,35 +209,43 @@ private:
 struct Flattener {
     KdTreeData& out;
     const KdCostModel& cost;
-    std::int64_t leaves = 0, empty_leaves = 0, leaf_primitives = 0, max_depth = 0;
+    std::int64_t nodes = 0, leaves = 0, empty_leaves = 0, leaf_primitives = 0, max_depth = 0;
 
-    // Returns the node's SAH cost (absolute, relative to the node's own surface area).
-    double flatten(const BuildNode& node, const AABB& box, int depth) {
+    // Writes the root at 0 and an empty leaf at 1, so that every sibling pair after them starts at an even
+    // index. Returns the tree's SAH cost.
+    double flatten_root(const BuildNode& root, const AABB& box) {
+        out.nodes.resize(2, KdNode::leaf(0, 0));
+        return flatten(root, 0, box, 0);
+    }
+
+    // Writes node at index and, below it, its children's pair and their subtrees. Returns the node's SAH
+    // cost (absolute, relative to the node's own surface area).
+    double flatten(const BuildNode& node, std::uint32_t index, const AABB& box, int depth) {
+        ++nodes;
         max_depth = std::max<std::int64_t>(max_depth, depth);
-        const auto index = static_cast<std::uint32_t>(out.nodes.size());
-        if (out.nodes.size() >= KdNode::kMaxIndex) throw Error("kd-tree: more than 2^28 nodes");
         if (node.axis < 0) {
             const auto count = static_cast<std::uint32_t>(node.primitives.size());
             ++leaves;
             if (count == 0) ++empty_leaves;
             leaf_primitives += count;
             if (count == 1) {
-                out.nodes.push_back(KdNode::leaf(1, node.primitives[0]));
+                out.nodes[index] = KdNode::leaf(1, node.primitives[0]);
             } else {
-                out.nodes.push_back(KdNode::leaf(count, static_cast<std::uint32_t>(out.primitive_indices.size())));
+                out.nodes[index] = KdNode::leaf(count, static_cast<std::uint32_t>(out.primitive_indices.size()));
                 out.primitive_indices.insert(out.primitive_indices.end(), node.primitives.begin(), node.primitives.end());
             }
             return cost.leaf_cost(count);
         }
-        out.nodes.push_back(KdNode::interior(node.axis, node.split, 0));
+        const auto children = static_cast<std::uint32_t>(out.nodes.size());
+        if (children + 1 > KdNode::kMaxIndex) throw Error("kd-tree: more than 2^28 nodes");
+        out.nodes.resize(out.nodes.size() + 2);
+        auto empty = [](const BuildNode& child) { return child.axis < 0 && child.primitives.empty(); };
+        out.nodes[index] = KdNode::interior(node.axis, node.split, children, empty(*node.below), empty(*node.above));
         AABB below_box = box, above_box = box;
         below_box.hi[node.axis] = node.split;
         above_box.lo[node.axis] = node.split;
-        const double below_cost = flatten(*node.below, below_box, depth + 1);
-        const auto above_index = static_cast<std::uint32_t>(out.nodes.size());
-        auto empty = [](const BuildNode& child) { return child.axis < 0 && child.primitives.empty(); };
-        out.nodes[index] = KdNode::interior(node.axis, node.split, above_index, empty(*node.below), empty(*node.above));
-        const double above_cost = flatten(*node.above, above_box, depth + 1);
+        const double below_cost = flatten(*node.below, children, below_box, depth + 1);
+        const double above_cost = flatten(*node.above, children + 1, above_box, depth + 1);
         const double area = box.surface_area();
         if (!(area > 0.0)) return cost.traversal() + below_cost + above_cost;
         return cost.traversal() + (below_box.surface_area() * below_cost + above_box.surface_area() * above_cost) / area;
@@ -292,9 +300,9 @@ KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const K
     else run();
 
     Flattener f{out, cost};
-    out.stats.sah_cost = f.flatten(*root, out.bounds, 0);
+    out.stats.sah_cost = f.flatten_root(*root, out.bounds);
     out.max_depth = static_cast<int>(f.max_depth) + 1;
-    out.stats.nodes = static_cast<std::int64_t>(out.nodes.size());
+    out.stats.nodes = f.nodes;
     out.stats.leaves = f.leaves;
     out.stats.empty_leaves = f.empty_leaves;
     out.stats.max_depth = f.max_depth;

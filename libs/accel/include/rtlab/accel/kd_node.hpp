@@ -8,19 +8,20 @@
 
 namespace rtlab {
 
-/// \brief Interior node: split position, axis, index of the above child (the below child is the next
-/// node) and which children are empty leaves (the traversal then never visits them). Leaf: primitive
-/// count and either the one primitive or an offset into the index array.
+/// \brief Interior node: split position, axis, index of its children (the below child, with the above child
+/// right after it: a pair starting at an even index, so one cache line holds both) and which children are
+/// empty leaves (the traversal then never visits them). Leaf: primitive count and either the one primitive
+/// or an offset into the index array.
 /// The 2 low bits of m_bits hold the axis (0..2) or 3 for a leaf. A leaf's 30 high bits hold its count;
 /// an interior node's bit 2 says the below child is empty, bit 3 the above child, and its 28 high bits
-/// hold the above child.
+/// hold the children's index.
 class KdNode {
 public:
-    static KdNode interior(int axis, float split, std::uint32_t above_child, bool below_empty = false,
+    static KdNode interior(int axis, float split, std::uint32_t children, bool below_empty = false,
                            bool above_empty = false) {
         KdNode n;
         n.m_split = split;
-        n.m_bits = (above_child << 4) | (static_cast<std::uint32_t>(above_empty) << 3) |
+        n.m_bits = (children << 4) | (static_cast<std::uint32_t>(above_empty) << 3) |
                    (static_cast<std::uint32_t>(below_empty) << 2) | static_cast<std::uint32_t>(axis);
         return n;
     }
@@ -34,7 +35,8 @@ public:
     bool is_leaf() const { return (m_bits & 3u) == 3u; }
     int axis() const { return static_cast<int>(m_bits & 3u); }
     float split() const { return m_split; }
-    std::uint32_t above_child() const { return m_bits >> 4; }
+    /// The below child; the above child is children() + 1.
+    std::uint32_t children() const { return m_bits >> 4; }
     /// Bit 0: the below child is an empty leaf; bit 1: the above child is.
     std::uint32_t empty_children() const { return (m_bits >> 2) & 3u; }
     std::uint32_t primitive_count() const { return m_bits >> 2; }
@@ -52,7 +54,8 @@ private:
 };
 static_assert(sizeof(KdNode) == 8, "kd-tree nodes are 8 bytes");
 
-/// \brief A built kd-tree: nodes in depth-first order (root at 0), leaf primitive indices, root bounds.
+/// \brief A built kd-tree: the root at 0 (node 1 is an empty leaf that only pads the root to a pair), then
+/// sibling pairs in depth-first order; leaf primitive indices; root bounds.
 struct KdTreeData {
     std::vector<KdNode> nodes;
     std::vector<std::uint32_t> primitive_indices;

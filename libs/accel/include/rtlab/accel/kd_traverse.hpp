@@ -8,6 +8,30 @@
 
 namespace rtlab {
 
+/// Clips [ray.tmin, ray.tmax] to the box by slabs with the inverse direction that the walk needs anyway
+/// (one division per axis rather than two). False for a miss, an empty box or a ray with a NaN or infinite
+/// component. The near plane is picked by the direction's sign bit, never by comparing distances: a zero
+/// component has an infinite inverse, so outside its slab both distances share one sign (a miss), inside
+/// they span everything, and an origin on a slab plane gives that plane a NaN, which the comparisons below
+/// ignore -- for +0 and -0 alike. The far distance grows by 2 gamma(3) as in AABB::intersect, so rounding
+/// never clips a hit away.
+inline bool clip_to_box(const AABB& box, const Ray& ray, const float* origin, const float* inv_dir, float& t0,
+                        float& t1) {
+    constexpr float far_scale = 1.0f + 2.0f * gamma_bound(3);
+    t0 = ray.tmin;
+    t1 = ray.tmax;
+    bool finite = true;
+    for (int a = 0; a < 3; ++a) {
+        const bool negative = std::signbit(ray.direction[a]);
+        const float t_near = ((negative ? box.hi[a] : box.lo[a]) - origin[a]) * inv_dir[a];
+        const float t_far = ((negative ? box.lo[a] : box.hi[a]) - origin[a]) * inv_dir[a] * far_scale;
+        t0 = t_near > t0 ? t_near : t0;
+        t1 = t_far < t1 ? t_far : t1;
+        finite &= std::isfinite(origin[a]) & std::isfinite(ray.direction[a]);
+    }
+    return finite & (t0 <= t1) & !box.is_empty();
+}
+
 /// Walks the tree front to back along the ray. `test_leaf(leaf, closest)` tests the primitives of a
 /// non-empty leaf node against the ray restricted to (ray.tmin, closest), returns true on a hit and, for
 /// closest-hit queries, lowers `closest` to the hit's t. With AnyHit the walk stops at the first hit.
@@ -20,17 +44,16 @@ namespace rtlab {
 template <bool AnyHit, class LeafTest>
 bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
     if (tree.nodes.empty()) return false;
-    const auto range = tree.bounds.intersect(ray);
-    if (!range) return false;
-    float tmin = range->min, tmax = range->max;
-    float closest = ray.tmax;
     float origin[3], inv_dir[3];
-    std::uint32_t flip[3];  // all ones where the above child comes first (a negative direction, -0 too)
+    std::uint32_t near_side[3];  // 1 where the above child comes first (a negative direction, -0 too)
     for (int a = 0; a < 3; ++a) {
         origin[a] = ray.origin[a];
         inv_dir[a] = 1.0f / ray.direction[a];
-        flip[a] = std::signbit(ray.direction[a]) ? ~0u : 0u;
+        near_side[a] = std::signbit(ray.direction[a]) ? 1u : 0u;
     }
+    float tmin, tmax;
+    if (!clip_to_box(tree.bounds, ray, origin, inv_dir, tmin, tmax)) return false;
+    float closest = ray.tmax;
 
     struct Entry {
         std::uint32_t node;
@@ -64,10 +87,11 @@ bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
             // whole interval.
             const int axis = node.axis();
             const float t_plane = (node.split() - origin[axis]) * inv_dir[axis];
-            const std::uint32_t below = index + 1, above = node.above_child();
-            const std::uint32_t near = below ^ ((below ^ above) & flip[axis]), far = near ^ below ^ above;
-            const std::uint32_t empty = node.empty_children(), near_side = flip[axis] & 1u;
-            const bool near_empty = (empty >> near_side) & 1u, far_empty = (empty >> (near_side ^ 1u)) & 1u;
+            // Siblings are a pair at an even index: the near child is the pair's first or second node.
+            const std::uint32_t side = near_side[axis];
+            const std::uint32_t near = node.children() | side, far = near ^ 1u;
+            const std::uint32_t empty = node.empty_children();
+            const bool near_empty = (empty >> side) & 1u, far_empty = (empty >> (side ^ 1u)) & 1u;
             const bool reaches_far = !(t_plane > tmax) & !far_empty;
             if ((t_plane < tmin) | near_empty) [[unlikely]] {
                 if (!reaches_far) [[unlikely]] {
