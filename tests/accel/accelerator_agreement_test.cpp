@@ -94,6 +94,45 @@ TEST_CASE("every method agrees with brute force on a closed icosphere", "[accel]
     check_all_methods("icosphere", sphere, standard_rays(sphere, 2000, 16, 16), true);
 }
 
+TEST_CASE("rays lying in the faces of the root box with +0 and -0 components", "[accel]") {
+    // The root box clip takes the inverse direction, so a zero component is an infinite inverse and an
+    // origin on that face plane gives 0 * inf = NaN: the clip must keep such rays (they run along the
+    // box's faces and hit the edges of the perpendicular faces), for +0 and -0 alike.
+    const int n = 6;
+    const TriangleMesh box = test::grid_box(n);
+    std::vector<Ray> rays;
+    const float size = static_cast<float>(n);
+    for (int face_axis = 0; face_axis < 3; ++face_axis)
+        for (float face : {0.0f, size})
+            for (float zero : {0.0f, -0.0f})
+                for (int k = 1; k < 3; ++k) {
+                    const int along = (face_axis + k) % 3, other = (face_axis + 3 - k) % 3;
+                    for (float sign : {1.0f, -1.0f})
+                        for (int i = 0; i <= 2 * n; ++i) {  // vertex and edge-midpoint coordinates
+                            Point3 o;
+                            o[face_axis] = face;
+                            o[along] = sign > 0 ? -2.0f : size + 2.0f;
+                            o[other] = 0.5f * static_cast<float>(i);
+                            Vec3 d(0.0f);
+                            d[face_axis] = zero;
+                            d[along] = sign;
+                            d[other] = (i % 3 == 0) ? -0.0f : 0.25f;  // along the face, straight or slanted
+                            rays.push_back(Ray{o, d});
+                        }
+                }
+    const auto reference = test::answers(*make_accelerator("brute", box), rays);
+    for (const std::string& method : accelerator_methods()) {
+        if (method == "brute" || method == "embree") continue;
+        const auto accel = make_accelerator(method, box);
+        const test::Agreement a = test::compare(*accel, reference, rays);
+        INFO(method << ": " << a.mismatches << " closest-hit and " << a.anyhit_mismatches << " any-hit mismatches of "
+                    << a.rays << " rays (" << a.hits << " hits)");
+        CHECK(a.hits > a.rays / 2);  // the edges of the perpendicular faces are hit, watertight
+        CHECK(a.mismatches == 0);
+        CHECK(a.anyhit_mismatches == 0);
+    }
+}
+
 TEST_CASE("1000 quads stacked at one coordinate", "[accel]") {
     const TriangleMesh quads = test::stacked_quads(1000, 1.0f);
     std::vector<Ray> rays = standard_rays(quads, 1000, 12, 10);
