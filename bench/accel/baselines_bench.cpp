@@ -1,4 +1,4 @@
-// Closest-hit and any-hit ns per ray for the baseline structures (bvh, octree, embree) on a closed
+// Closest-hit and any-hit ns per ray for kd-sah and the baseline structures (bvh, octree, embree) on a closed
 // icosphere of 81,920 triangles and the standard random ray set of FORMATS.md (fewer rays); build time
 // per method. Whole-model figures come from rtlab-accel, this tracks the inner loops between commits.
 #include <rtlab/accel/accelerator.hpp>
@@ -57,12 +57,15 @@ void build(benchmark::State& state, const std::string& method) {
 
 }  // namespace
 
+BENCHMARK_CAPTURE(closest_hit, kd_sah, std::string("kd-sah"));
 BENCHMARK_CAPTURE(closest_hit, bvh, std::string("bvh"));
 BENCHMARK_CAPTURE(closest_hit, octree, std::string("octree"));
 BENCHMARK_CAPTURE(closest_hit, embree, std::string("embree"));
+BENCHMARK_CAPTURE(any_hit, kd_sah, std::string("kd-sah"));
 BENCHMARK_CAPTURE(any_hit, bvh, std::string("bvh"));
 BENCHMARK_CAPTURE(any_hit, octree, std::string("octree"));
 BENCHMARK_CAPTURE(any_hit, embree, std::string("embree"));
+BENCHMARK_CAPTURE(build, kd_sah, std::string("kd-sah"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(build, bvh, std::string("bvh"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(build, octree, std::string("octree"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(build, embree, std::string("embree"))->Unit(benchmark::kMillisecond);
