@@ -32,27 +32,13 @@ inline bool clip_to_box(const AABB& box, const Ray& ray, const float* origin, co
     return finite & (t0 <= t1) & !box.is_empty();
 }
 
-/// Walks the tree front to back along the ray. `test_leaf(leaf, closest)` tests the primitives of a
-/// non-empty leaf node against the ray restricted to (ray.tmin, closest), returns true on a hit and, for
-/// closest-hit queries, lowers `closest` to the hit's t. With AnyHit the walk stops at the first hit.
-///
-/// Exact where naive traversals are not: the near child is chosen by the sign bit of the direction, so a
-/// component of +0 or -0 (an infinite inverse) visits the side holding the origin; a ray lying in a split
-/// plane gets a NaN plane distance, which no comparison accepts, and visits both children (primitives
-/// touching the plane may sit on either side); tmin = tmax and negative tmin work; a NaN ray misses (the
-/// root box test rejects it).
-template <bool AnyHit, class LeafTest>
-bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
-    if (tree.nodes.empty()) return false;
-    float origin[3], inv_dir[3];
-    std::uint32_t near_side[3];  // 1 where the above child comes first (a negative direction, -0 too)
-    for (int a = 0; a < 3; ++a) {
-        origin[a] = ray.origin[a];
-        inv_dir[a] = 1.0f / ray.direction[a];
-        near_side[a] = std::signbit(ray.direction[a]) ? 1u : 0u;
-    }
-    float tmin, tmax;
-    if (!clip_to_box(tree.bounds, ray, origin, inv_dir, tmin, tmax)) return false;
+namespace detail {
+
+/// The walk of kd_traverse for rays whose direction has the sign bits of Octant (bit a set for a negative
+/// component a, -0 included), over [tmin, tmax] already clipped to the root box.
+template <bool AnyHit, unsigned Octant, class LeafTest>
+bool kd_walk(const KdTreeData& tree, const Ray& ray, const float* origin, const float* inv_dir, float tmin, float tmax,
+             LeafTest& test_leaf) {
     float closest = ray.tmax;
 
     struct Entry {
@@ -87,8 +73,9 @@ bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
             // whole interval.
             const int axis = node.axis();
             const float t_plane = (node.split() - origin[axis]) * inv_dir[axis];
-            // Siblings are a pair at an even index: the near child is the pair's first or second node.
-            const std::uint32_t side = near_side[axis];
+            // Siblings are a pair at an even index: the near child is the pair's first or second node, the
+            // above one where the direction is negative.
+            const std::uint32_t side = (Octant >> axis) & 1u;
             const std::uint32_t near = node.children() | side, far = near ^ 1u;
             const std::uint32_t empty = node.empty_children();
             const bool near_empty = (empty >> side) & 1u, far_empty = (empty >> (side ^ 1u)) & 1u;
@@ -115,6 +102,48 @@ bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
         if (!pop()) break;
     }
     return hit;
+}
+
+}  // namespace detail
+
+/// Walks the tree front to back along the ray. `test_leaf(leaf, closest)` tests the primitives of a
+/// non-empty leaf node against the ray restricted to (ray.tmin, closest), returns true on a hit and, for
+/// closest-hit queries, lowers `closest` to the hit's t. With AnyHit the walk stops at the first hit.
+///
+/// Exact where naive traversals are not: the near child is chosen by the sign bit of the direction, so a
+/// component of +0 or -0 (an infinite inverse) visits the side holding the origin; a ray lying in a split
+/// plane gets a NaN plane distance, which no comparison accepts, and visits both children (primitives
+/// touching the plane may sit on either side); tmin = tmax and negative tmin work; a NaN ray misses (the
+/// root box test rejects it).
+///
+/// The walk is compiled once per octant of directions: the near side of each axis is then a constant, and
+/// each octant's copy has branches of its own for the predictor to learn (bunny and dragon, random rays,
+/// 1 thread: 1-6% faster than one walk for all directions).
+template <bool AnyHit, class LeafTest>
+bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
+    if (tree.nodes.empty()) return false;
+    float origin[3], inv_dir[3];
+    unsigned octant = 0;
+    for (int a = 0; a < 3; ++a) {
+        origin[a] = ray.origin[a];
+        inv_dir[a] = 1.0f / ray.direction[a];
+        octant |= (std::signbit(ray.direction[a]) ? 1u : 0u) << a;
+    }
+    float tmin, tmax;
+    if (!clip_to_box(tree.bounds, ray, origin, inv_dir, tmin, tmax)) return false;
+    auto walk = [&]<unsigned Octant>() {
+        return detail::kd_walk<AnyHit, Octant>(tree, ray, origin, inv_dir, tmin, tmax, test_leaf);
+    };
+    switch (octant) {
+        case 0: return walk.template operator()<0>();
+        case 1: return walk.template operator()<1>();
+        case 2: return walk.template operator()<2>();
+        case 3: return walk.template operator()<3>();
+        case 4: return walk.template operator()<4>();
+        case 5: return walk.template operator()<5>();
+        case 6: return walk.template operator()<6>();
+        default: return walk.template operator()<7>();
+    }
 }
 
 }  // namespace rtlab
