@@ -2,6 +2,7 @@
 // A mesh's triangles laid out for one triangle test, and the per-triangle test every accelerator's
 // leaves call (private to the accel library).
 #include <rtlab/accel/accelerator.hpp>
+#include <rtlab/accel/box_ray.hpp>
 #include <rtlab/geometry/triangle_intersect.hpp>
 #include <rtlab/geometry/triangle_mesh.hpp>
 
@@ -113,41 +114,6 @@ decltype(auto) dispatch_triangle_test(TriangleTest test, F&& f) {
     }
     return f.template operator()<TriangleTest::watertight>();
 }
-
-/// \brief Slab test against node boxes with the inverse direction and its signs precomputed (Williams et
-/// al. 2005). A zero direction component gives an infinite inverse and, for an origin on that slab's
-/// plane, 0 * inf = NaN: the comparisons are written so a NaN bound is ignored (the axis then constrains
-/// nothing, which is exact for an origin inside the slab). The far end and the current closest t are
-/// enlarged by 2 gamma(3) (Ize 2013) so rounding never drops a hit.
-struct BoxRay {
-    Vec3 origin, inv;
-    int negative[3];
-    float tmin;
-    explicit BoxRay(const Ray& ray) : origin(ray.origin), tmin(ray.tmin) {
-        for (int a = 0; a < 3; ++a) {
-            inv[a] = 1.0f / ray.direction[a];
-            negative[a] = std::signbit(inv[a]) ? 1 : 0;
-        }
-    }
-    // t moved up by 2 gamma(3) relative; a product, so +-inf stays itself and never becomes NaN.
-    static float enlarge(float t) {
-        constexpr float kTwoGamma3 = 2.0f * 3.0f * 0x1p-24f / (1.0f - 3.0f * 0x1p-24f);
-        return t * (t > 0.0f ? 1.0f + kTwoGamma3 : 1.0f - kTwoGamma3);
-    }
-    // Entry distance into box for t in [tmin, limit], or +inf when the ray misses it.
-    float enter(const AABB& box, float limit) const {
-        float t0 = tmin, t1 = enlarge(limit);
-        for (int a = 0; a < 3; ++a) {
-            const float near_plane = negative[a] ? box.hi[a] : box.lo[a];
-            const float far_plane = negative[a] ? box.lo[a] : box.hi[a];
-            const float n = (near_plane - origin[a]) * inv[a];
-            const float f = enlarge((far_plane - origin[a]) * inv[a]);
-            t0 = n > t0 ? n : t0;  // false for NaN: keeps t0
-            t1 = f < t1 ? f : t1;
-        }
-        return t0 <= t1 ? t0 : kInfinity;
-    }
-};
 
 /// False for a ray no structure can hit: a NaN anywhere, or an empty interval.
 inline bool usable_ray(const Ray& ray) {
