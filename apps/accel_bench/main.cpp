@@ -1,6 +1,7 @@
 // rtlab-accel: builds acceleration structures over a mesh and reports build time, size, closest-hit and
 // any-hit throughput, and mismatches against a reference (DESIGN.md, FORMATS.md).
 #include <rtlab/accel/accelerator.hpp>
+#include <rtlab/accel/kd_tree.hpp>
 #include <rtlab/accel/ray_io.hpp>
 #include <rtlab/core/error.hpp>
 #include <rtlab/geometry/mesh_io.hpp>
@@ -101,7 +102,7 @@ int main(int argc, char** argv) {
     std::string mesh_path;
     std::vector<std::string> methods;
     std::vector<std::string> ray_specs;
-    int threads = 0, runs = 5, primary_size = 1024;
+    int threads = 0, runs = 5, primary_size = 1024, leaf_width = 0;
     std::size_t random_count = 1000000, sample_size = 2000;
     std::string hits_out, csv_path, triangle = "watertight";
     app.add_option("--mesh", mesh_path, "mesh file (.ply or .obj)")->required();
@@ -115,6 +116,9 @@ int main(int argc, char** argv) {
                    "write the closest hits of the first method other than brute on the first ray set (RTHITS01)");
     app.add_option("--csv", csv_path, "write the results as CSV (FORMATS.md)");
     app.add_option("--triangle", triangle, "ray-triangle test: watertight, moller or plane");
+    app.add_option("--leaf-width", leaf_width,
+                   fmt::format("triangles a kd-tree leaf tests at once: {} (default: the widest)",
+                               fmt::join(kd_leaf_widths(), " or ")));
     app.add_option("--sample", sample_size, "rays checked against the reference per ray set (default 2000)");
     app.add_option("--primary-size", primary_size, "N of the N x N primary set (default 1024)")->check(CLI::PositiveNumber);
     app.add_option("--random-count", random_count, "rays in the random set (default 1,000,000)");
@@ -124,6 +128,7 @@ int main(int argc, char** argv) {
         BuildOptions options;
         options.triangle_test = parse_triangle_test(triangle);
         options.threads = threads;
+        options.leaf_width = leaf_width;
         const auto known = accelerator_methods();
         if (methods.empty()) {
             methods = {"kd-sah", "kd-sah-binned", "bvh"};
@@ -186,14 +191,17 @@ int main(int argc, char** argv) {
             csv.emplace(fmt::output_file(csv_path));
             csv->print("method,mesh,triangles,threads,build_s,nodes,leaves,empty_leaves,max_depth,mean_leaf_prims,bytes,"
                        "sah_cost,ray_set,rays,closest_mrays_s,anyhit_mrays_s,mismatches,triangle_test,reference,"
-                       "bytes_per_triangle\n");
+                       "bytes_per_triangle,leaf_width\n");
         }
         fmt::print("{:<14} {:>9} {:>9} {:>9} {:>6} {:>6} {:>11} {:>6} {:>9} {:<10} {:>9} {:>10} {:>10} {:>10}\n", "method",
                    "build_s", "nodes", "leaves", "depth", "leaf", "bytes", "B/tri", "sah", "rays", "count", "closest",
                    "any-hit", "mismatch");
         const std::string mesh_name = std::filesystem::path(mesh_path).filename().string();
         bool hits_written = false;
+        const std::vector<std::string> kd_methods = kd_tree_methods();
+        const int kd_width = leaf_width != 0 ? leaf_width : kd_leaf_widths().back();
         for (const auto& method : methods) {
+            const bool is_kd_tree = std::find(kd_methods.begin(), kd_methods.end(), method) != kd_methods.end();
             // Build time: median of the runs (one build kept for tracing).
             std::unique_ptr<TriangleAccelerator> accel;
             std::vector<double> build_times;
@@ -241,11 +249,12 @@ int main(int argc, char** argv) {
                            field(st.bytes), field(bytes_per_triangle, "{:.1f}"), field(st.sah_cost, "{:.2f}"), set.name, rays->size(),
                            closest_mrays, any_mrays, field(mismatches));
                 if (csv)
-                    csv->print("{},{},{},{},{:.6g},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{},{},{},{}\n", method, mesh_name,
+                    csv->print("{},{},{},{},{:.6g},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{},{},{},{},{}\n", method, mesh_name,
                                mesh.triangle_count(), thread_count, build_s, field(st.nodes), field(st.leaves),
                                field(st.empty_leaves), field(st.max_depth), field(st.mean_leaf_primitives), field(st.bytes),
                                field(st.sah_cost), set.name, rays->size(), closest_mrays, any_mrays, field(mismatches),
-                               to_string(options.triangle_test), ref.name, field(bytes_per_triangle, "{:.2f}"));
+                               to_string(options.triangle_test), ref.name, field(bytes_per_triangle, "{:.2f}"),
+                               is_kd_tree ? fmt::format("{}", kd_width) : std::string());
                 // Brute force traced only the sample, so its records do not answer the whole set.
                 if (!hits_out.empty() && !hits_written && method != "brute") {
                     write_hit_file(hits_out, hits);

@@ -1,4 +1,5 @@
 #include <rtlab/accel/accelerator.hpp>
+#include <rtlab/accel/kd_tree.hpp>
 #include <rtlab/accel/ray_io.hpp>
 #include <rtlab/core/error.hpp>
 #include <rtlab/core/rng.hpp>
@@ -50,28 +51,39 @@ std::vector<Ray> standard_rays(const TriangleMesh& mesh, std::size_t random_coun
     return rays;
 }
 
+// The methods to check with one leaf width: every method at the first width, and the kd-trees over
+// triangles (whose leaves are packets of that width) at the others.
+std::vector<std::string> methods_at_width(int width) {
+    return width == kd_leaf_widths().front() ? accelerator_methods() : kd_tree_methods();
+}
+
 // Embree is checked only on ordinary meshes: on the adversarial ones (rays starting on a plane of 1000
 // coincident quads) its own arithmetic legitimately gives a tiny positive t where rtlab's tests give 0.
+
 void check_all_methods(const std::string& label, const TriangleMesh& mesh, const std::vector<Ray>& rays,
                        bool include_naive, bool include_embree = true) {
     for (TriangleTest test : {TriangleTest::watertight, TriangleTest::moller, TriangleTest::plane}) {
         BuildOptions options;
         options.triangle_test = test;
         const auto reference = test::answers(*make_accelerator("brute", mesh, options), rays);
-        for (const std::string& method : accelerator_methods()) {
-            if (method == "brute" || (method == "kd-sah-naive" && !include_naive)) continue;
-            if (method == "embree" && (test != TriangleTest::watertight || !include_embree)) continue;
-            const auto accel = make_accelerator(method, mesh, options);
-            const test::Agreement a = test::compare(*accel, reference, rays);
-            INFO(label << ", " << method << ", " << to_string(test) << ": " << a.mismatches << " closest-hit and "
-                       << a.anyhit_mismatches << " any-hit mismatches of " << a.rays << " rays (" << a.hits << " hits)");
-            // Embree's own watertight test may pick the other of two triangles sharing an edge at equal t:
-            // same_hit accepts that; it may not disagree on hit or miss beyond rounding at silhouettes.
-            if (method == "embree") {
-                CHECK(a.mismatches <= a.rays / 1000);
-            } else {
-                CHECK(a.mismatches == 0);
-                CHECK(a.anyhit_mismatches == 0);
+        for (int width : kd_leaf_widths()) {
+            options.leaf_width = width;
+            for (const std::string& method : methods_at_width(width)) {
+                if (method == "brute" || (method == "kd-sah-naive" && !include_naive)) continue;
+                if (method == "embree" && (test != TriangleTest::watertight || !include_embree)) continue;
+                const auto accel = make_accelerator(method, mesh, options);
+                const test::Agreement a = test::compare(*accel, reference, rays);
+                INFO(label << ", " << method << ", " << to_string(test) << ", leaf width " << width << ": "
+                           << a.mismatches << " closest-hit and " << a.anyhit_mismatches << " any-hit mismatches of "
+                           << a.rays << " rays (" << a.hits << " hits)");
+                // Embree's own watertight test may pick the other of two triangles sharing an edge at equal
+                // t: same_hit accepts that; it may not disagree on hit or miss beyond rounding at silhouettes.
+                if (method == "embree") {
+                    CHECK(a.mismatches <= a.rays / 1000);
+                } else {
+                    CHECK(a.mismatches == 0);
+                    CHECK(a.anyhit_mismatches == 0);
+                }
             }
         }
     }
@@ -168,12 +180,16 @@ TEST_CASE("a grid of 100k coplanar triangles hit head-on and edge-on and in-plan
         BuildOptions options;
         options.triangle_test = test;
         const auto reference = test::answers(*make_accelerator("brute", grid, options), rays);
-        for (const char* method : {"kd-sah", "kd-sah-binned", "kd-median", "kd-midpoint", "bvh", "octree"}) {
-            const auto accel = make_accelerator(method, grid, options);
-            const test::Agreement a = test::compare(*accel, reference, rays);
-            INFO(method << ", " << to_string(test) << ": " << a.mismatches << " mismatches of " << a.rays);
-            CHECK(a.mismatches == 0);
-            CHECK(a.anyhit_mismatches == 0);
+        for (int width : kd_leaf_widths()) {
+            options.leaf_width = width;
+            for (const char* method : {"kd-sah", "kd-sah-binned", "kd-median", "kd-midpoint", "bvh", "octree"}) {
+                const auto accel = make_accelerator(method, grid, options);
+                const test::Agreement a = test::compare(*accel, reference, rays);
+                INFO(method << ", " << to_string(test) << ", leaf width " << width << ": " << a.mismatches
+                            << " mismatches of " << a.rays);
+                CHECK(a.mismatches == 0);
+                CHECK(a.anyhit_mismatches == 0);
+            }
         }
     }
 }
@@ -206,4 +222,18 @@ TEST_CASE("empty and single-triangle meshes", "[accel]") {
 TEST_CASE("unknown methods list the known ones", "[accel]") {
     const TriangleMesh one = test::icosphere(0);
     CHECK_THROWS_WITH(make_accelerator("kd-magic", one), Catch::Matchers::Contains("kd-sah, kd-sah-binned"));
+}
+
+TEST_CASE("kd-tree leaves run at every width this CPU has and refuse the others by name", "[accel]") {
+    const std::vector<int> widths = kd_leaf_widths();
+    REQUIRE(!widths.empty());
+    CHECK(widths.front() == 4);
+    const TriangleMesh sphere = test::icosphere(2);
+    BuildOptions options;
+    options.leaf_width = 3;
+    CHECK_THROWS_WITH(make_kd_tree("kd-sah", sphere, options), Catch::Matchers::Contains("width 3"));
+    if (widths.back() != 8) {
+        options.leaf_width = 8;
+        CHECK_THROWS_WITH(make_kd_tree("kd-sah", sphere, options), Catch::Matchers::Contains("AVX2"));
+    }
 }

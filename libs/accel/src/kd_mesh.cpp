@@ -5,17 +5,37 @@
 #include "kd_packets.hpp"
 #include "mesh_triangles.hpp"
 
+#include <algorithm>
 #include <span>
+#include <string>
 
 namespace rtlab {
 
 namespace {
 
+bool cpu_has_avx2() {
+#if RTLAB_KD_HAVE_AVX2_LEAVES
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
+
+// The leaf width to use: the one asked for, or the widest this CPU runs.
+int leaf_width(int requested) {
+    const std::vector<int> widths = kd_leaf_widths();
+    if (requested == 0) return widths.back();
+    if (std::find(widths.begin(), widths.end(), requested) == widths.end())
+        throw Error("kd-tree leaves: width " + std::to_string(requested) + " is not one this CPU runs (" +
+                    (requested == 8 ? "8 needs AVX2" : "the widths are 4 and 8") + ")");
+    return requested;
+}
+
 class KdMeshAccelerator final : public TriangleAccelerator {
 public:
     KdMeshAccelerator(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options, const KdCostModel& cost)
         : m_name(kd_strategy_name(strategy)), m_tree(build(strategy, mesh, options, cost)),
-          m_packets(options.triangle_test) {
+          m_packets(options.triangle_test, leaf_width(options.leaf_width)) {
         lay_out_leaves(mesh);
         m_tree.stats.bytes = static_cast<std::int64_t>(m_tree.nodes.size() * sizeof(KdNode) + m_packets.bytes());
     }
@@ -37,9 +57,19 @@ private:
         return accel::dispatch_triangle_test(m_packets.test(), [&]<TriangleTest Test>() {
             const kd::PacketRay<Test> r(ray);
             if (!r.valid()) return false;
+#if RTLAB_KD_HAVE_AVX2_LEAVES
+            // Packets of 8: the walk stays in the baseline instruction set (it gains nothing from AVX2) and
+            // calls the AVX2 leaf test, about once per ray.
+            if (m_packets.width() == 8) {
+                return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest) {
+                    return kd::test_packets_avx2<Test, AnyHit>(m_packets, r, leaf.primitive_offset(),
+                                                               leaf.primitive_count(), closest, hit);
+                });
+            }
+#endif
             return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest) {
-                return kd::test_packets<Test, AnyHit>(m_packets, r, leaf.primitive_offset(), leaf.primitive_count(),
-                                                      closest, hit);
+                return kd::test_packets<Test, AnyHit, 4>(m_packets, r, leaf.primitive_offset(), leaf.primitive_count(),
+                                                         closest, hit);
             });
         });
     }
@@ -67,7 +97,7 @@ private:
                 count == 1 ? std::span<const std::uint32_t>(&one, 1)
                            : std::span<const std::uint32_t>(m_tree.primitive_indices.data() + node.primitive_offset(), count);
             const std::uint32_t first = m_packets.add_leaf(mesh, triangles);
-            node = KdNode::leaf((count + 3) / 4, first);
+            node = KdNode::leaf(m_packets.packets_for(count), first);
         }
         std::vector<std::uint32_t>().swap(m_tree.primitive_indices);
         m_packets.shrink();
@@ -79,6 +109,11 @@ private:
 };
 
 }  // namespace
+
+std::vector<int> kd_leaf_widths() {
+    if (cpu_has_avx2()) return {4, 8};
+    return {4};
+}
 
 std::vector<std::string> kd_tree_methods() {
     return {"kd-sah", "kd-sah-binned", "kd-sah-naive", "kd-median", "kd-midpoint"};

@@ -39,6 +39,9 @@ struct AccelStats {
 struct BuildOptions {
     TriangleTest triangle_test = TriangleTest::watertight;
     int threads = 0;  ///< 0: oneTBB's default
+    /// Triangles a kd-tree leaf tests at once: 4, 8 (AVX2) or 0 for the widest this CPU runs. Every width
+    /// gives the same answers; kd_leaf_widths() lists those the CPU runs.
+    int leaf_width = 0;
 };
 
 /// \brief An acceleration structure over one triangle mesh (which must outlive it).

@@ -115,7 +115,11 @@ private:
 /// The kd-tree methods make_kd_tree knows: kd-sah, kd-sah-binned, kd-sah-naive, kd-median, kd-midpoint.
 std::vector<std::string> kd_tree_methods();
 
-/// A kd-tree over a mesh's triangles with a leaf layout precomputed for options.triangle_test.
+/// The leaf widths (triangles tested at once) this CPU runs, widest last: {4}, or {4, 8} with AVX2.
+std::vector<int> kd_leaf_widths();
+
+/// A kd-tree over a mesh's triangles with a leaf layout precomputed for options.triangle_test, in packets
+/// of options.leaf_width triangles. Throws rtlab::Error for a width the CPU does not run.
 /// Degenerate triangles are left out (they are never hit).
 std::unique_ptr<TriangleAccelerator> make_kd_tree(std::string_view method, const TriangleMesh& mesh,
                                                   const BuildOptions& options = {});
@@ -123,8 +127,8 @@ std::unique_ptr<TriangleAccelerator> make_kd_tree(std::string_view method, const
 std::unique_ptr<TriangleAccelerator> make_kd_tree(std::string_view method, const TriangleMesh& mesh,
                                                   const BuildOptions& options, const KdCostModel& cost);
 
-/// The cost model of make_kd_tree: leaves are tested four triangles at a time, so a triangle costs about
-/// a tenth of a traversal step (on the bunny and the dragon, random rays, intersection costs of 0.05 to
+/// The cost model of make_kd_tree: leaves are tested four or eight triangles at a time, so a triangle costs
+/// about a tenth of a traversal step (on the bunny and the dragon, random rays, intersection costs of 0.05 to
 /// 0.1 give the fastest trees; 0.3, right for one triangle at a time, is 10-20% slower).
 inline KdCostModel kd_mesh_cost_model() { return KdCostModel(1.0f, 0.1f, 0.2f); }
 
