@@ -15,6 +15,7 @@ namespace {
 
 bool cpu_has_avx2() {
 #if RTLAB_KD_HAVE_AVX2_LEAVES
+    __builtin_cpu_init();  // a tree may be built from a static initializer, before libgcc's own call
     return __builtin_cpu_supports("avx2");
 #else
     return false;
