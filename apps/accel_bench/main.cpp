@@ -64,17 +64,19 @@ void trace_any(const TriangleAccelerator& accel, const std::vector<Ray>& rays, s
     });
 }
 
-template <class Pass>
-double timed_median(int runs, Pass&& pass) {
-    pass();  // untimed warm-up
-    std::vector<double> times;
-    for (int k = 0; k < runs; ++k) {
-        const auto start = Clock::now();
-        pass();
-        times.push_back(seconds_since(start));
-    }
-    return median(times);
-}
+// A method built for the run, and what tracing one ray set with it gave.
+struct Built {
+    std::string method;
+    std::unique_ptr<TriangleAccelerator> accel;
+    double build_s = 0;
+};
+
+struct Traced {
+    const std::vector<Ray>* rays = nullptr;
+    std::vector<MeshHit> hits;
+    std::vector<unsigned char> blocked;
+    std::vector<double> closest_s, any_s;  // one per timed round
+};
 
 bool mismatch(const MeshHit& a, bool hit_a, const MeshHit& b, bool hit_b) {
     if (hit_a != hit_b) return true;
@@ -111,7 +113,7 @@ int main(int argc, char** argv) {
                                fmt::join(accelerator_methods(), ", ")));
     app.add_option("--rays", ray_specs, "primary, random or a ray file (repeatable; default: primary and random)");
     app.add_option("--threads", threads, "threads for building and tracing (default: all)")->check(CLI::NonNegativeNumber);
-    app.add_option("--runs", runs, "timed runs per measurement (median; default 5)")->check(CLI::PositiveNumber);
+    app.add_option("--runs", runs, "timed builds and tracing rounds per method (median; default 5)")->check(CLI::PositiveNumber);
     app.add_option("--hits-out", hits_out,
                    "write the closest hits of the first method other than brute on the first ray set (RTHITS01)");
     app.add_option("--csv", csv_path, "write the results as CSV (FORMATS.md)");
@@ -200,70 +202,93 @@ int main(int argc, char** argv) {
         bool hits_written = false;
         const std::vector<std::string> kd_methods = kd_tree_methods();
         const int kd_width = leaf_width != 0 ? leaf_width : kd_leaf_widths().back();
+
+        // Every method is built first (build time: median of the runs, one build kept for tracing) ...
+        std::vector<Built> built;
         for (const auto& method : methods) {
-            const bool is_kd_tree = std::find(kd_methods.begin(), kd_methods.end(), method) != kd_methods.end();
-            // Build time: median of the runs (one build kept for tracing).
-            std::unique_ptr<TriangleAccelerator> accel;
+            Built b;
+            b.method = method;
             std::vector<double> build_times;
             const int build_runs = (method == "brute" || method == "kd-sah-naive") ? 1 : runs;
             for (int k = 0; k < build_runs; ++k) {
                 const auto start = Clock::now();
-                arena.execute([&] { accel = make_accelerator(method, mesh, options); });
+                arena.execute([&] { b.accel = make_accelerator(method, mesh, options); });
                 build_times.push_back(seconds_since(start));
             }
-            const double build_s = median(build_times);
-            const AccelStats st = accel->stats();
-            // The structure's own bytes (nodes, indices, leaf layouts) per triangle of the mesh.
-            const double bytes_per_triangle =
-                st.bytes < 0 || mesh.triangle_count() == 0 ? -1.0
-                                                           : static_cast<double>(st.bytes) / static_cast<double>(mesh.triangle_count());
-            for (std::size_t s = 0; s < sets.size(); ++s) {
-                const RaySet& set = sets[s];
-                const Reference& ref = references[s];
-                // Brute force traces only the reference sample: a full pass would take hours.
-                std::vector<Ray> sampled;
-                const std::vector<Ray>* rays = &set.rays;
-                if (method == "brute") {
-                    for (std::size_t i : even_sample(set.rays.size(), sample_size)) sampled.push_back(set.rays[i]);
-                    rays = &sampled;
+            b.build_s = median(build_times);
+            built.push_back(std::move(b));
+        }
+
+        // ... then each ray set is traced in rounds, each round timing one closest-hit and one any-hit pass of
+        // every method in turn: a slow spell of these shared machines then falls on all methods alike, and
+        // the ratios between methods of one run hold even when the absolute figures drift.
+        for (std::size_t s = 0; s < sets.size(); ++s) {
+            const RaySet& set = sets[s];
+            const Reference& ref = references[s];
+            // Brute force traces only the reference sample: a full pass would take hours.
+            std::vector<Ray> sampled;
+            for (std::size_t i : even_sample(set.rays.size(), sample_size)) sampled.push_back(set.rays[i]);
+            std::vector<Traced> traced(built.size());
+            for (std::size_t m = 0; m < built.size(); ++m) {
+                const std::vector<Ray>& rays = built[m].method == "brute" ? sampled : set.rays;
+                traced[m].rays = &rays;
+                traced[m].hits.resize(rays.size());
+                traced[m].blocked.resize(rays.size());
+            }
+            arena.execute([&] {
+                for (int round = -1; round < runs; ++round) {  // round -1: the untimed warm-up
+                    for (std::size_t m = 0; m < built.size(); ++m) {
+                        Traced& t = traced[m];
+                        const auto start = Clock::now();
+                        trace_closest(*built[m].accel, *t.rays, t.hits);
+                        const auto middle = Clock::now();
+                        trace_any(*built[m].accel, *t.rays, t.blocked);
+                        if (round < 0) continue;
+                        t.closest_s.push_back(std::chrono::duration<double>(middle - start).count());
+                        t.any_s.push_back(seconds_since(middle));
+                    }
                 }
-                std::vector<MeshHit> hits(rays->size());
-                std::vector<unsigned char> blocked(rays->size());
-                double closest_s = 0, any_s = 0;
-                arena.execute([&] {
-                    closest_s = timed_median(runs, [&] { trace_closest(*accel, *rays, hits); });
-                    any_s = timed_median(runs, [&] { trace_any(*accel, *rays, blocked); });
-                });
+            });
+            for (std::size_t m = 0; m < built.size(); ++m) {
+                const std::string& method = built[m].method;
+                const Traced& t = traced[m];
+                const AccelStats st = built[m].accel->stats();
+                const bool is_kd_tree = std::find(kd_methods.begin(), kd_methods.end(), method) != kd_methods.end();
+                // The structure's own bytes (nodes, indices, leaf layouts) per triangle of the mesh.
+                const double bytes_per_triangle =
+                    st.bytes < 0 || mesh.triangle_count() == 0 ? -1.0
+                                                               : static_cast<double>(st.bytes) / static_cast<double>(mesh.triangle_count());
                 std::int64_t mismatches = -1;
                 if (!ref.sample.empty()) {
                     mismatches = 0;
                     for (std::size_t k = 0; k < ref.sample.size(); ++k) {
                         const std::size_t i = method == "brute" ? k : ref.sample[k];
-                        mismatches += mismatch(hits[i], hits[i].hit(), ref.hits[k], ref.hit[k] != 0);
+                        mismatches += mismatch(t.hits[i], t.hits[i].hit(), ref.hits[k], ref.hit[k] != 0);
                     }
                 }
-                const double closest_mrays = static_cast<double>(rays->size()) / closest_s / 1e6;
-                const double any_mrays = static_cast<double>(rays->size()) / any_s / 1e6;
+                const std::size_t count = t.rays->size();
+                const double closest_mrays = static_cast<double>(count) / median(t.closest_s) / 1e6;
+                const double any_mrays = static_cast<double>(count) / median(t.any_s) / 1e6;
                 fmt::print("{:<14} {:>9.4f} {:>9} {:>9} {:>6} {:>6} {:>11} {:>6} {:>9} {:<10} {:>9} {:>10.3f} {:>10.3f} {:>10}\n",
-                           method, build_s, field(st.nodes), field(st.leaves), field(st.max_depth), field(st.mean_leaf_primitives, "{:.2f}"),
-                           field(st.bytes), field(bytes_per_triangle, "{:.1f}"), field(st.sah_cost, "{:.2f}"), set.name, rays->size(),
-                           closest_mrays, any_mrays, field(mismatches));
+                           method, built[m].build_s, field(st.nodes), field(st.leaves), field(st.max_depth),
+                           field(st.mean_leaf_primitives, "{:.2f}"), field(st.bytes), field(bytes_per_triangle, "{:.1f}"),
+                           field(st.sah_cost, "{:.2f}"), set.name, count, closest_mrays, any_mrays, field(mismatches));
                 if (csv)
                     csv->print("{},{},{},{},{:.6g},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{},{},{},{},{}\n", method, mesh_name,
-                               mesh.triangle_count(), thread_count, build_s, field(st.nodes), field(st.leaves),
+                               mesh.triangle_count(), thread_count, built[m].build_s, field(st.nodes), field(st.leaves),
                                field(st.empty_leaves), field(st.max_depth), field(st.mean_leaf_primitives), field(st.bytes),
-                               field(st.sah_cost), set.name, rays->size(), closest_mrays, any_mrays, field(mismatches),
+                               field(st.sah_cost), set.name, count, closest_mrays, any_mrays, field(mismatches),
                                to_string(options.triangle_test), ref.name, field(bytes_per_triangle, "{:.2f}"),
                                is_kd_tree ? fmt::format("{}", kd_width) : std::string());
                 // Brute force traced only the sample, so its records do not answer the whole set.
-                if (!hits_out.empty() && !hits_written && method != "brute") {
-                    write_hit_file(hits_out, hits);
+                if (!hits_out.empty() && !hits_written && s == 0 && method != "brute") {
+                    write_hit_file(hits_out, t.hits);
                     hits_written = true;
                 }
             }
         }
-        fmt::print("throughput in Mrays/s, median of {} runs after one untimed pass, {} thread(s); mismatch = rays whose "
-                   "closest hit differs from the reference on the sample\n",
+        fmt::print("throughput in Mrays/s, median of {} rounds after one untimed round (the methods take turns in each "
+                   "round), {} thread(s); mismatch = rays whose closest hit differs from the reference on the sample\n",
                    runs, thread_count);
     } catch (const std::exception& e) {
         fmt::print(stderr, "rtlab-accel: {}\n", e.what());
