@@ -200,9 +200,6 @@ int main(int argc, char** argv) {
                    "any-hit", "mismatch");
         const std::string mesh_name = std::filesystem::path(mesh_path).filename().string();
         bool hits_written = false;
-        const std::vector<std::string> kd_methods = kd_tree_methods();
-        const int kd_width = leaf_width != 0 ? leaf_width : kd_leaf_widths().back();
-
         // Every method is built first (build time: median of the runs, one build kept for tracing) ...
         std::vector<Built> built;
         for (const auto& method : methods) {
@@ -253,7 +250,6 @@ int main(int argc, char** argv) {
                 const std::string& method = built[m].method;
                 const Traced& t = traced[m];
                 const AccelStats st = built[m].accel->stats();
-                const bool is_kd_tree = std::find(kd_methods.begin(), kd_methods.end(), method) != kd_methods.end();
                 // The structure's own bytes (nodes, indices, leaf layouts) per triangle of the mesh.
                 const double bytes_per_triangle =
                     st.bytes < 0 || mesh.triangle_count() == 0 ? -1.0
@@ -279,7 +275,7 @@ int main(int argc, char** argv) {
                                field(st.empty_leaves), field(st.max_depth), field(st.mean_leaf_primitives), field(st.bytes),
                                field(st.sah_cost), set.name, count, closest_mrays, any_mrays, field(mismatches),
                                to_string(options.triangle_test), ref.name, field(bytes_per_triangle, "{:.2f}"),
-                               is_kd_tree ? fmt::format("{}", kd_width) : std::string());
+                               field(st.leaf_width));
                 // Brute force traced only the sample, so its records do not answer the whole set.
                 if (!hits_out.empty() && !hits_written && s == 0 && method != "brute") {
                     write_hit_file(hits_out, t.hits);

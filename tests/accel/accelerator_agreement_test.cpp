@@ -230,6 +230,11 @@ TEST_CASE("kd-tree leaves run at every width this CPU has and refuse the others 
     CHECK(widths.front() == 4);
     const TriangleMesh sphere = test::icosphere(2);
     BuildOptions options;
+    CHECK(make_kd_tree("kd-sah", sphere, options)->stats().leaf_width == widths.back());  // 0: the widest
+    for (int width : widths) {
+        options.leaf_width = width;
+        CHECK(make_kd_tree("kd-sah", sphere, options)->stats().leaf_width == width);
+    }
     options.leaf_width = 3;
     CHECK_THROWS_WITH(make_kd_tree("kd-sah", sphere, options), Catch::Matchers::Contains("width 3"));
     if (widths.back() != 8) {

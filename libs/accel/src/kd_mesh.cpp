@@ -39,6 +39,7 @@ public:
           m_packets(options.triangle_test, leaf_width(options.leaf_width)) {
         lay_out_leaves(mesh);
         m_tree.stats.bytes = static_cast<std::int64_t>(m_tree.nodes.size() * sizeof(KdNode) + m_packets.bytes());
+        m_tree.stats.leaf_width = m_packets.width();
     }
 
     std::string_view name() const override { return m_name; }

@@ -33,6 +33,7 @@ struct AccelStats {
     double mean_leaf_primitives = -1.0;  ///< over non-empty leaves
     std::int64_t bytes = -1;             ///< nodes + primitive index arrays + per-primitive precomputation
     double sah_cost = -1.0;              ///< expected cost by the structure's own cost model
+    std::int64_t leaf_width = -1;        ///< triangles a leaf tests at once (kd-trees over a mesh)
 };
 
 /// \brief Options common to all builders (each builder reads what applies to it).
