@@ -36,8 +36,11 @@ private:
     float m_exponent;
 };
 
-/// \brief Energy-normalised Blinn-Phong: kd / pi + ks (e + 8) / (8 pi) cos^e(theta_h), theta_h the angle
-/// between the normal and the half vector (Akenine-Moller et al., Real-Time Rendering).
+/// \brief Energy-normalised Blinn-Phong: kd / pi + ks c(e) cos^e(theta_h), theta_h the angle between the
+/// normal and the half vector, c(e) = (e + 2)(e + 4) / (8 pi (e + 2^(-e/2))): the lobe then reflects exactly
+/// ks at normal incidence, its largest albedo, and conserves energy when kd + ks <= 1. (The common
+/// (e + 8) / (8 pi) of Real-Time Rendering approximates c(e) and reflects up to 7.5% more than it
+/// receives, at e ~ 9.)
 class BlinnPhongBrdf final : public Brdf {
 public:
     BlinnPhongBrdf(const RGB& kd, const RGB& ks, float exponent);
@@ -46,6 +49,7 @@ public:
 private:
     RGB m_kd, m_ks;
     float m_exponent;
+    float m_norm;  // c(e)
 };
 
 }  // namespace rtlab
