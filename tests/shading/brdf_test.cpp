@@ -1,6 +1,6 @@
 // Physics tests every BRDF must pass: reciprocity, energy conservation measured by deterministic
 // quadrature (tests/shading/quadrature.hpp), black below the surface, and finite values at the edges of
-// the domain.
+// the domain. Model-specific checks live in microfacet_test.cpp and ashikhmin_shirley_test.cpp.
 #include <rtlab/core/error.hpp>
 #include <rtlab/core/rng.hpp>
 #include <rtlab/shading/brdf.hpp>
@@ -34,6 +34,7 @@ struct Model {
 // Every model with parameters that should conserve energy, several right at the limit (kd + ks = 1, a
 // perfect mirror's Fresnel), and the extremes of their exponents and roughness.
 std::vector<Model> models() {
+    using MD = MicrofacetDistribution;
     std::vector<Model> m;
     auto add = [&](std::string name, std::unique_ptr<Brdf> f) { m.push_back({std::move(name), std::move(f)}); };
     add("lambert", std::make_unique<LambertBrdf>(RGB(0.8f, 0.5f, 1.0f)));
@@ -42,6 +43,25 @@ std::vector<Model> models() {
     // e = 9 is where the (e + 8) / (8 pi) approximation overshoots most (7.5%).
     add("blinn-phong kd+ks=1 e=9", std::make_unique<BlinnPhongBrdf>(RGB(0.4f), RGB(0.6f), 9.0f));
     add("blinn-phong e=1e4", std::make_unique<BlinnPhongBrdf>(RGB(0.0f), RGB(1.0f), 1e4f));
+    add("cook-torrance ggx r=0.3 glass kd=0.5",
+        std::make_unique<CookTorranceBrdf>(RGB(0.5f), RGB(1.0f), MD::from_roughness(MicrofacetModel::ggx, 0.3f),
+                                           Fresnel::dielectric(1.5f)));
+    add("cook-torrance beckmann r=0.6 gold",
+        std::make_unique<CookTorranceBrdf>(RGB(0.0f), RGB(1.0f), MD::from_roughness(MicrofacetModel::beckmann, 0.6f),
+                                           Fresnel::conductor(kGold)));
+    add("cook-torrance ggx r=0 mirror",
+        std::make_unique<CookTorranceBrdf>(RGB(0.0f), RGB(1.0f), MD::from_roughness(MicrofacetModel::ggx, 0.0f),
+                                           Fresnel::one()));
+    add("cook-torrance beckmann r=1 mirror",
+        std::make_unique<CookTorranceBrdf>(RGB(0.0f), RGB(1.0f), MD::from_roughness(MicrofacetModel::beckmann, 1.0f),
+                                           Fresnel::one()));
+    add("ashikhmin-shirley rd=1 rs=0.05 10x1000",
+        std::make_unique<AshikhminShirleyBrdf>(RGB(1.0f), RGB(0.05f), 10.0f, 1000.0f));
+    add("ashikhmin-shirley rd=0.5 rs=0.5 0x0",
+        std::make_unique<AshikhminShirleyBrdf>(RGB(0.5f), RGB(0.5f), 0.0f, 0.0f));
+    add("ashikhmin-shirley rd=1 rs=0.6 1e4x1e4",
+        std::make_unique<AshikhminShirleyBrdf>(RGB(1.0f), RGB(0.6f), 1e4f, 1e4f));
+    add("ashikhmin-shirley rs=1 1e5x1e5", std::make_unique<AshikhminShirleyBrdf>(RGB(0.0f), RGB(1.0f), 1e5f, 1e5f));
     return m;
 }
 
@@ -57,10 +77,18 @@ TEST_CASE("every BRDF is finite at grazing and normal directions and black below
     const std::vector<Vec3> not_above = {{1, 0, 0}, {0, -1, 0}, {0, 0, -1}, {0.6f, 0.8f, -1e-8f}, direction(2.0f)};
     // Zero-roughness and zero-exponent limits of every model, on top of the energy-conserving set.
     std::vector<Model> all = models();
+    using MD = MicrofacetDistribution;
     for (float e : {0.0f, 1e6f}) {
         all.push_back({"phong e=" + std::to_string(e), std::make_unique<PhongBrdf>(RGB(0.5f), RGB(0.5f), e)});
         all.push_back({"blinn e=" + std::to_string(e), std::make_unique<BlinnPhongBrdf>(RGB(0.5f), RGB(0.5f), e)});
+        all.push_back(
+            {"as e=" + std::to_string(e), std::make_unique<AshikhminShirleyBrdf>(RGB(0.5f), RGB(0.5f), e, e)});
     }
+    all.push_back({"as 0x1e6", std::make_unique<AshikhminShirleyBrdf>(RGB(0.5f), RGB(0.5f), 0.0f, 1e6f)});
+    for (auto model : {MicrofacetModel::ggx, MicrofacetModel::beckmann})
+        all.push_back({"cook-torrance r=0",
+                       std::make_unique<CookTorranceBrdf>(RGB(0.5f), RGB(1.0f), MD::from_roughness(model, 0.0f),
+                                                          Fresnel::conductor(kAluminium))});
     int bad = 0, checked = 0;
     for (const auto& [name, f] : all) {
         for (const Vec3& a : above) {
@@ -88,7 +116,7 @@ TEST_CASE("every BRDF is finite at grazing and normal directions and black below
 
 TEST_CASE("every BRDF is reciprocal", "[brdf]") {
     // Random pairs over the hemisphere, half of them with one direction within 1e-3 of the horizon, where
-    // 1 / cos factors are largest.
+    // the 1 / cos factors of the microfacet and Ashikhmin-Shirley models are largest.
     Rng rng(3);
     float worst = 0.0f;
     int bad = 0, pairs = 0;
