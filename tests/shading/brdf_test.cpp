@@ -69,11 +69,19 @@ bool finite_and_non_negative(const RGB& c) { return c.is_finite() && c.r >= 0.0f
 }  // namespace
 
 TEST_CASE("every BRDF is finite at grazing and normal directions and black below the surface", "[brdf]") {
-    // Degenerate and extreme directions: exactly in the tangent plane, 1e-8 and 1e-20 above it, along the
-    // normal, opposite grazing pairs (half vector along the normal from two horizon directions), wo = wi.
-    const std::vector<Vec3> above = {{0, 0, 1},           {1, 0, 1e-8f},         {-1, 0, 1e-8f},
-                                     {0, 1, 1e-8f},       {0.6f, -0.8f, 1e-20f}, {-0.6f, 0.8f, 1e-20f},
-                                     {0.6f, 0.8f, 1e-8f}, direction(1.0f, 2.0f)};
+    // Degenerate and extreme directions: exactly in the tangent plane, 1e-8, 1e-20 and 1e-30 above it,
+    // along the normal, opposite grazing pairs (half vector along the normal from two horizon directions;
+    // at 1e-30 their sum's square underflows), wo = wi.
+    const std::vector<Vec3> above = {{0, 0, 1},
+                                     {1, 0, 1e-8f},
+                                     {-1, 0, 1e-8f},
+                                     {0, 1, 1e-8f},
+                                     {0.6f, -0.8f, 1e-20f},
+                                     {-0.6f, 0.8f, 1e-20f},
+                                     {0.6f, -0.8f, 1e-30f},
+                                     {-0.6f, 0.8f, 1e-30f},
+                                     {0.6f, 0.8f, 1e-8f},
+                                     direction(1.0f, 2.0f)};
     const std::vector<Vec3> not_above = {{1, 0, 0}, {0, -1, 0}, {0, 0, -1}, {0.6f, 0.8f, -1e-8f}, direction(2.0f)};
     // Zero-roughness and zero-exponent limits of every model, on top of the energy-conserving set.
     std::vector<Model> all = models();

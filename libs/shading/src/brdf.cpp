@@ -45,7 +45,7 @@ BlinnPhongBrdf::BlinnPhongBrdf(const RGB& kd, const RGB& ks, float exponent)
 
 RGB BlinnPhongBrdf::eval(const Vec3& wo, const Vec3& wi) const {
     if (!same_hemisphere_above(wo, wi)) return {};
-    const Vec3 h = glm::normalize(wo + wi);
+    const Vec3 h = detail::half_vector(wo, wi);
     // cos(theta_h)^e = (1 - sin^2)^(e / 2).
     const float lobe = m_norm * detail::pow_one_minus(h.x * h.x + h.y * h.y, 0.5f * m_exponent);
     return m_kd * kInvPi + m_ks * lobe;

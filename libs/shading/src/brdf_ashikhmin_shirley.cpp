@@ -25,8 +25,7 @@ AshikhminShirleyBrdf::AshikhminShirleyBrdf(const RGB& rd, const RGB& rs, float n
 
 RGB AshikhminShirleyBrdf::eval(const Vec3& wo, const Vec3& wi) const {
     if (!detail::both_above(wo, wi)) return {};
-    const Vec3 sum = wo + wi;
-    const Vec3 h = sum / std::sqrt(glm::dot(sum, sum));
+    const Vec3 h = detail::half_vector(wo, wi);
     const float cos_d = std::min(1.0f, 0.5f * (glm::dot(wo, h) + glm::dot(wi, h)));  // h.k, symmetric
     // (n.h)^p with p = (nu h_x^2 + nv h_y^2) / (1 - (n.h)^2), and 1 - (n.h)^2 = s2 = h_x^2 + h_y^2 for a
     // unit h; along the normal the power is 1.

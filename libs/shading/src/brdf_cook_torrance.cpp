@@ -14,8 +14,7 @@ CookTorranceBrdf::CookTorranceBrdf(const RGB& kd, const RGB& ks, const Microface
 
 RGB CookTorranceBrdf::eval(const Vec3& wo, const Vec3& wi) const {
     if (!detail::both_above(wo, wi)) return {};
-    const Vec3 sum = wo + wi;
-    const Vec3 h = sum / std::sqrt(glm::dot(sum, sum));  // wo.z, wi.z > 0, so |sum| > 0
+    const Vec3 h = detail::half_vector(wo, wi);
     // The same for (wo, wi) and (wi, wo), bit for bit, so reciprocity does not depend on rounding.
     const float cos_d = std::min(1.0f, 0.5f * (glm::dot(wo, h) + glm::dot(wi, h)));
     // G1 / cos per direction keeps the 1 / (cos_o cos_i) finite at grazing angles; their product first, so

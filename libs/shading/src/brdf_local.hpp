@@ -12,6 +12,14 @@ namespace rtlab::detail {
 /// Both directions strictly above the surface: every BRDF is black otherwise.
 inline bool both_above(const Vec3& wo, const Vec3& wi) { return wo.z > 0.0f && wi.z > 0.0f; }
 
+/// The half vector of two directions above the surface. Their sum has |sum| >= cos_o + cos_i > 0, but for
+/// opposite directions within 1e-19 of the horizon its square underflows; the limit there is n.
+inline Vec3 half_vector(const Vec3& wo, const Vec3& wi) {
+    const Vec3 sum = wo + wi;
+    const float len2 = glm::dot(sum, sum);
+    return len2 > 0.0f ? sum / std::sqrt(len2) : Vec3(0.0f, 0.0f, 1.0f);
+}
+
 /// (1 - x)^e for x in [0, 1], from x rather than from 1 - x: the cosines of narrow lobes round to multiples of
 /// 6e-8 near 1, which an exponent of 1e4 turns into percent-level errors, while x = 1 - cos, taken from
 /// the sines, keeps full precision. 0^0 = 1, as std::pow has it.
