@@ -3,6 +3,7 @@
 #include <rtlab/core/image.hpp>
 #include <rtlab/core/param_checks.hpp>
 #include <rtlab/textures/texture.hpp>
+#include <rtlab/textures/texture_param.hpp>
 
 #include <memory>
 #include <string>
@@ -13,13 +14,8 @@ namespace rtlab::detail {
 /// ColorEncoding from "srgb" or "linear".
 ColorEncoding get_encoding(const Params& params);
 
-/// A texture that is one colour everywhere (what "solid" creates).
-std::shared_ptr<const Texture> make_constant(const RGB& colour);
-
-/// The colour parameter `colour_name` or the nested texture `texture_name` (not both); the fallback colour
-/// when neither is given.
-std::shared_ptr<const Texture> colour_or_texture(const Params& params, std::string_view colour_name,
-                                                 std::string_view texture_name, const RGB& fallback);
+/// A texture that is one colour everywhere (what "solid" creates and make_constant_texture returns).
+std::shared_ptr<Texture> make_solid(const RGB& colour);
 
 /// Registration hooks, one per texture file.
 void register_solid(TextureRegistry& registry);

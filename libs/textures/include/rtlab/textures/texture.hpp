@@ -19,9 +19,13 @@ class Texture {
 public:
     virtual ~Texture() = default;
     virtual RGB eval(const TextureLookup& lookup) const = 0;
+    /// The colour of a texture that is the same everywhere, or nullptr: lets a caller read a constant
+    /// once instead of calling eval at every hit.
+    virtual const RGB* constant() const { return nullptr; }
 };
 
-/// Nested textures travel inside Params as objects: params.set_object<Texture>("texture1", t).
+/// Nested textures travel inside Params as objects under the same key a constant colour would use:
+/// params.set_object<Texture>("color1", t); see rtlab/textures/texture_param.hpp.
 using TextureRegistry = Registry<Texture>;
 
 /// Registers every built-in texture by name: solid, checker, checker3d, mandelbrot, perlin, simplex,
