@@ -9,6 +9,11 @@
 ///
 /// Scalars from a texture (roughness, metallic, a bump height) are scalar(texture.eval(lookup)): the mean
 /// of the three channels, so a grey constant or a grey image gives its own value exactly.
+///
+/// Opacity (cut-outs) is opacity(texture, lookup): the texture's alpha when it has one (an RGBA or
+/// grey + alpha image file), else the scalar of its colour. So the same RGBA image can be both a
+/// material's colour and its opacity (Saturn's rings: colour from RGB, holes from alpha), and a grey
+/// mask image or a constant such as 0.5 works as well.
 #include <rtlab/core/color.hpp>
 #include <rtlab/core/params.hpp>
 #include <rtlab/textures/texture.hpp>
@@ -32,6 +37,11 @@ std::shared_ptr<const Texture> texture_param(const Params& params, std::string_v
 /// == x for every finite float x.
 inline float scalar(const RGB& c) {
     return static_cast<float>((static_cast<double>(c.r) + static_cast<double>(c.g) + static_cast<double>(c.b)) / 3.0);
+}
+
+/// The opacity a texture gives at a lookup: alpha(lookup) when has_alpha(), else scalar(eval(lookup)).
+inline float opacity(const Texture& texture, const TextureLookup& lookup) {
+    return texture.has_alpha() ? texture.alpha(lookup) : scalar(texture.eval(lookup));
 }
 
 }  // namespace rtlab
