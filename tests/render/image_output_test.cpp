@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <string>
+
+#include <unistd.h>
 
 using namespace rtlab;
 namespace fs = std::filesystem;
@@ -18,7 +21,9 @@ namespace {
 
 /// A fresh empty folder for one test.
 fs::path scratch(const char* name) {
-    const fs::path dir = fs::temp_directory_path() / (std::string("rtlab_render_output_") + name);
+    // The process id keeps concurrent test runs (ctest -j, other checkouts) apart.
+    const fs::path dir =
+        fs::temp_directory_path() / ("rtlab_render_output_" + std::string(name) + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;

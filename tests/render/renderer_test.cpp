@@ -15,7 +15,10 @@
 #include <filesystem>
 #include <mutex>
 #include <set>
+#include <string>
 #include <thread>
+
+#include <unistd.h>
 
 using namespace rtlab;
 
@@ -143,7 +146,8 @@ TEST_CASE("a stopped render returns promptly with the finished tiles and writes 
         }
         return RGB(1.0f);
     });
-    const auto dir = std::filesystem::temp_directory_path() / "rtlab_render_cancel_test";
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("rtlab_render_cancel_test_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     for (int threads : {1, 2}) {

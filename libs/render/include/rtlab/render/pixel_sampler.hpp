@@ -51,9 +51,9 @@ struct AdaptiveSettings {
 inline constexpr int kMaxAdaptiveDepth = 8;
 
 /// POV-Ray's +AM2 colour distance: |r1 - r2| + |g1 - g2| + |b1 - b2| of the colours clamped to [0, 1]
-/// per component (linear values, before tone mapping; POV-Ray 3.7 compares after its Antialias_Gamma,
-/// so compare with Antialias_Gamma=1). A NaN component differs by 1 from anything, NaN included, so a
-/// NaN corner always splits its square (down to the depth cap). In [0, 3].
+/// per component (linear values, before tone mapping; POV-Ray 3.7 compares after applying its
+/// Antialias_Gamma, default 2.5, so compare with +AG1). A NaN component differs by 1 from anything, NaN
+/// included, so a NaN corner always splits its square (down to the depth cap). In [0, 3].
 float display_difference(const RGB& a, const RGB& b);
 
 }  // namespace rtlab
