@@ -6,11 +6,24 @@
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <atomic>
 #include <cmath>
+
+#include <sys/resource.h>
 
 using namespace rtlab;
 
 namespace {
+
+/// CPU seconds of all the process's threads: on a loaded machine the wall-clock speed-up of 2 threads
+/// says little, but equal CPU time per render at 1 and 2 threads means the parallel version does no
+/// extra work and would scale on free cores.
+double process_cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    auto s = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+    return s(usage.ru_utime) + s(usage.ru_stime);
+}
 
 struct Sphere {
     Point3 centre;
@@ -28,9 +41,17 @@ float hit_sphere(const Sphere& s, const Ray& r) {
     return t > 1e-4f ? t : kInfinity;
 }
 
+/// Counts the threads that traced a ray in the current render (epoch), without a lock per ray.
+std::atomic<int> g_epoch{0}, g_threads_used{0};
+
 class AnalyticScene final : public RadianceSource {
 public:
     RGB radiance(const Ray& r, const SampleKey&, RayCounters& counters) const override {
+        thread_local int seen_epoch = -1;
+        if (const int e = g_epoch.load(std::memory_order_relaxed); seen_epoch != e) {
+            seen_epoch = e;
+            g_threads_used.fetch_add(1, std::memory_order_relaxed);
+        }
         float best = kInfinity;
         int hit = -1;
         for (int i = 0; i < 3; ++i) {
@@ -69,12 +90,20 @@ void BM_Render(benchmark::State& state, PixelPattern pattern, int spp) {
     settings.adaptive = {3, 0.1f};
     settings.threads = static_cast<int>(state.range(0));
     std::uint64_t rays = 0;
+    const double cpu_start = process_cpu_seconds();
+    int threads_used = 0;
     for (auto _ : state) {
+        g_epoch.fetch_add(1);
+        g_threads_used = 0;
         const RenderResult result = render(camera, scene, settings);
         rays += result.stats.rays.total();
         benchmark::DoNotOptimize(result.image.pixels().data());
+        threads_used += g_threads_used.load();
     }
+    state.counters["threads_used"] = static_cast<double>(threads_used) / static_cast<double>(state.iterations());
     state.counters["rays/s"] = benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
+    state.counters["process_cpu_ms/render"] =
+        1e3 * (process_cpu_seconds() - cpu_start) / static_cast<double>(state.iterations());
     state.counters["rays/render"] = static_cast<double>(rays) / static_cast<double>(state.iterations());
 }
 
