@@ -48,8 +48,8 @@ bool render_fixed_tile(const TileContext& c, const Tile& t, RayCounters& counter
     const RenderSettings& s = c.settings;
     const int n = pattern_sample_count(s.pattern, s.spp);
     for (int y = t.y0; y < t.y1; ++y) {
-        if (stopped(c.callbacks)) return false;
         for (int x = t.x0; x < t.x1; ++x) {
+            if (stopped(c.callbacks)) return false;
             const SampleKey pixel{s.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0, 0};
             RGB sum;
             for (int i = 0; i < n; ++i) {
@@ -79,10 +79,12 @@ public:
           m_values(static_cast<std::size_t>((m_res + 1) * m_cols)),
           m_ready(m_values.size(), 0) {}
 
-    /// Renders pixel row y of the tile.
-    void render_row(int y, RayCounters& counters) {
+    /// Renders pixel row y of the tile; false when stopped before its end.
+    bool render_row(int y, RayCounters& counters) {
         m_y = y;
         for (int x = m_tile.x0; x < m_tile.x1; ++x) {
+            // Per pixel: at depth 8 one pixel may trace 66,049 rays.
+            if (stopped(m_c.callbacks)) return false;
             m_traced = 0;
             const int i0 = (x - m_tile.x0) * m_res;
             m_c.image.at(x, y) = square(i0, 0, m_res, counters);
@@ -94,6 +96,7 @@ public:
         std::copy(m_values.end() - static_cast<std::ptrdiff_t>(row), m_values.end(), m_values.begin());
         std::copy(m_ready.end() - static_cast<std::ptrdiff_t>(row), m_ready.end(), m_ready.begin());
         std::fill(m_ready.begin() + static_cast<std::ptrdiff_t>(row), m_ready.end(), 0);
+        return true;
     }
 
 private:
@@ -151,10 +154,8 @@ private:
 
 bool render_adaptive_tile(const TileContext& c, const Tile& t, RayCounters& counters) {
     AdaptiveRow row(c, t);
-    for (int y = t.y0; y < t.y1; ++y) {
-        if (stopped(c.callbacks)) return false;
-        row.render_row(y, counters);
-    }
+    for (int y = t.y0; y < t.y1; ++y)
+        if (!row.render_row(y, counters)) return false;
     return true;
 }
 

@@ -44,7 +44,7 @@ struct RenderStats {
 struct RenderCallbacks {
     /// Called after each finished tile, from a worker thread, never by two threads at once.
     std::function<void(const RenderProgress&)> progress;
-    /// When set and true, workers stop at the next pixel row of a tile and render() returns what is done.
+    /// When set and true, workers stop before their next pixel and render() returns what is done.
     const std::atomic<bool>* stop = nullptr;
 };
 
