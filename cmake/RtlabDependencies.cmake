@@ -5,6 +5,8 @@ find_package(tinyobjloader REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(fmt REQUIRED)
 find_package(Threads REQUIRED)
+# OpenEXR 3 (libopenexr-dev) for render's .exr output: float RGB channels.
+find_package(OpenEXR 3 REQUIRED)
 
 # Header-only packages without a CMake config: stb (we compile its implementation ourselves in core) and
 # pcg-cpp. Both live in /usr/include on Debian.

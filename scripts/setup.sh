@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libglm-dev libstb-dev libtinyobjloader-dev catch2 libtbb-dev libcli11-dev nlohmann-json3-dev
-  libfmt-dev libpcg-cpp-dev libbenchmark-dev
+  libfmt-dev libpcg-cpp-dev libbenchmark-dev libopenexr-dev
   libembree-dev      # optional reference backend; the build works without it
   python3-matplotlib # charts (scripts/charts.sh, run with /usr/bin/python3)
 )

@@ -1,0 +1,65 @@
+#pragma once
+/// \brief The parallel tile renderer: camera + radiance source -> HDR image, with progress and cancel.
+#include <rtlab/core/image.hpp>
+#include <rtlab/render/camera.hpp>
+#include <rtlab/render/pixel_sampler.hpp>
+#include <rtlab/render/radiance_source.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace rtlab {
+
+/// \brief How to render. The image does not depend on `threads` or on the tile size.
+struct RenderSettings {
+    PixelPattern pattern = PixelPattern::none;
+    int spp = 1;                ///< samples per pixel for grid, random and jittered
+    AdaptiveSettings adaptive;  ///< for PixelPattern::adaptive
+    std::uint64_t seed = 0;     ///< SampleKey::seed of every sample
+    int tile_size = 16;         ///< tiles are tile_size x tile_size pixels (smaller at the right and bottom)
+    int threads = 0;            ///< 0: as many as the machine has (TBB's default)
+};
+
+/// \brief Where a render is: passed to RenderCallbacks::progress after every finished tile.
+struct RenderProgress {
+    int tiles_done = 0;
+    int tiles_total = 0;
+    RayCounters rays;      ///< rays of the finished tiles
+    double seconds = 0.0;  ///< since the render started
+};
+
+/// \brief What a render did.
+struct RenderStats {
+    RayCounters rays;
+    double seconds = 0.0;
+    int tiles_done = 0;
+    int tiles_total = 0;
+    bool cancelled = false;  ///< the stop flag was seen: some tiles may be missing
+    double rays_per_second() const { return seconds > 0.0 ? static_cast<double>(rays.total()) / seconds : 0.0; }
+};
+
+/// \brief How the renderer talks back. The library writes nothing to stdout or stderr itself.
+struct RenderCallbacks {
+    /// Called after each finished tile, from a worker thread, never by two threads at once.
+    std::function<void(const RenderProgress&)> progress;
+    /// When set and true, workers stop before their next pixel and render() returns what is done.
+    const std::atomic<bool>* stop = nullptr;
+};
+
+/// \brief The rendered image and what it cost.
+struct RenderResult {
+    Image image;                         ///< linear radiance; pixels never reached are black
+    std::vector<std::uint32_t> samples;  ///< camera rays each pixel traced, row-major; 0: not rendered
+    RenderStats stats;
+};
+
+/// Renders camera.width() x camera.height() pixels in parallel tiles. Throws rtlab::Error for bad
+/// settings (spp, tile size, thread count, adaptive depth or threshold); exceptions thrown by the
+/// radiance source reach the caller. With the adaptive pattern a corner shared by neighbouring pixels is
+/// traced once per tile and counted by the pixel that needed it first.
+RenderResult render(const Camera& camera, const RadianceSource& radiance, const RenderSettings& settings,
+                    const RenderCallbacks& callbacks = {});
+
+}  // namespace rtlab

@@ -1,0 +1,101 @@
+#include <rtlab/core/error.hpp>
+#include <rtlab/core/file.hpp>
+#include <rtlab/render/exr.hpp>
+#include <rtlab/render/image_output.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <string>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace rtlab {
+
+OutputFormat output_format(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    if (ext == ".png") return OutputFormat::png;
+    if (ext == ".hdr") return OutputFormat::hdr;
+    if (ext == ".pfm") return OutputFormat::pfm;
+    if (ext == ".exr") return OutputFormat::exr;
+    throw Error(file_error_message(path, "unknown image format '" + ext + "'; known: .png, .hdr, .pfm, .exr"));
+}
+
+std::shared_ptr<const ToneOperator> make_tone_operator(const ToneRegistry& registry, std::string_view name,
+                                                       Params params) {
+    if (name == "none") {
+        params.set_context("tone operator 'none'");
+        params.check_all_used();
+        return nullptr;
+    }
+    return registry.create(name, std::move(params));
+}
+
+namespace {
+
+/// Clamps to [0, 1]; NaN to 0 (write_png would too, this keeps the rule in one visible place).
+Image clamp_display(const Image& hdr) {
+    Image out = hdr;
+    auto c = [](float v) { return v >= 0.0f ? std::min(v, 1.0f) : 0.0f; };
+    for (RGB& p : out.pixels()) p = RGB(c(p.r), c(p.g), c(p.b));
+    return out;
+}
+
+/// A name in the target's folder that no other writer in this or another process uses; it keeps the
+/// target's extension so a reader of a left-over file can tell what it is.
+std::filesystem::path temporary_path(const std::filesystem::path& path) {
+    static std::atomic<unsigned> counter{0};
+    std::filesystem::path tmp = path;
+    tmp.replace_filename("." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                         std::to_string(counter.fetch_add(1)) + path.extension().string());
+    return tmp;
+}
+
+void write_format(const Image& image, OutputFormat format, const std::filesystem::path& path) {
+    switch (format) {
+        case OutputFormat::png:
+            return write_png(image, path);
+        case OutputFormat::hdr:
+            return write_hdr(image, path);
+        case OutputFormat::pfm:
+            return write_pfm(image, path);
+        case OutputFormat::exr:
+            return write_exr(image, path);
+    }
+}
+
+}  // namespace
+
+void write_render_output(const Image& hdr, const std::filesystem::path& path, const ToneOperator* tone,
+                         ToneReport* report) {
+    const OutputFormat format = output_format(path);
+    if (hdr.empty()) throw Error(file_error_message(path, "cannot write an empty image"));
+    Image display;
+    if (format == OutputFormat::png) display = tone ? tone->apply(hdr, report) : clamp_display(hdr);
+    const Image& out = format == OutputFormat::png ? display : hdr;
+
+    const std::filesystem::path tmp = temporary_path(path);
+    try {
+        write_format(out, format, tmp);
+        std::error_code ec;
+        std::filesystem::rename(tmp, path, ec);
+        if (ec) throw Error(file_error_message(path, "cannot replace it with the finished image: " + ec.message()));
+    } catch (const Error& e) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        // Errors from the writers name the temporary file; the user asked for `path`.
+        const std::string message = e.what();
+        const std::string prefix = file_error_message(tmp, "");
+        if (message.rfind(prefix, 0) != 0) throw;
+        throw Error(file_error_message(path, message.substr(prefix.size())));
+    } catch (...) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        throw;
+    }
+}
+
+}  // namespace rtlab

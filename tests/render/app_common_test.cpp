@@ -1,0 +1,88 @@
+#include <rtlab/app/progress_bar.hpp>
+#include <rtlab/app/stop_on_interrupt.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+using namespace rtlab;
+using namespace rtlab::app;
+
+TEST_CASE("the progress line shows tiles rate and time left", "[app]") {
+    RenderProgress p{10, 40, {}, 5.0};
+    p.rays.camera = 12'000'000;
+    p.rays.shadow = 4'050'000;
+    CHECK(format_progress(p, 8) == "[##......] 10/40 tiles  3.21 Mrays/s  0:05 elapsed  0:15 left");
+    CHECK(format_progress(RenderProgress{0, 7, {}, 0.0}, 4) == "[....] 0/7 tiles  0 rays/s  0:00 elapsed  --:-- left");
+    RenderProgress slow{1, 400, {}, 30.0};
+    slow.rays.camera = 45'000;
+    CHECK(format_progress(slow, 2) == "[..]   1/400 tiles  1.5 krays/s  0:30 elapsed  3:19:30 left");
+    CHECK(format_progress(RenderProgress{40, 40, {}, 2.0}, 4).starts_with("[####] 40/40"));
+}
+
+TEST_CASE("the progress bar is silent when stderr is not a terminal or with quiet", "[app]") {
+    std::FILE* file = std::tmpfile();
+    REQUIRE(file);
+    {
+        ProgressBar bar(file, false);
+        CHECK_FALSE(bar.enabled());
+        for (int i = 1; i <= 5; ++i) bar.update(RenderProgress{i, 5, {}, 0.1 * i});
+        bar.finish();
+    }
+    CHECK(std::ftell(file) == 0);
+    std::fclose(file);
+
+    // On a real terminal (a pseudo-terminal here) it draws, unless quiet.
+    const int master = ::posix_openpt(O_RDWR | O_NOCTTY);
+    REQUIRE(master >= 0);
+    REQUIRE(::grantpt(master) == 0);
+    REQUIRE(::unlockpt(master) == 0);
+    std::FILE* tty = std::fopen(::ptsname(master), "w");
+    REQUIRE(tty);
+    {
+        ProgressBar quiet(tty, true);
+        CHECK_FALSE(quiet.enabled());
+        quiet.update(RenderProgress{1, 2, {}, 1.0});
+    }
+    {
+        ProgressBar bar(tty, false);
+        CHECK(bar.enabled());
+        bar.update(RenderProgress{1, 2, {}, 1.0});
+        bar.update(RenderProgress{2, 2, {}, 2.0});
+    }
+    std::fclose(tty);
+    char buffer[512] = {};
+    const ssize_t n = ::read(master, buffer, sizeof buffer - 1);
+    ::close(master);
+    const std::string drawn(buffer, n > 0 ? static_cast<std::size_t>(n) : 0);
+    // Both updates (the last tile is always drawn), nothing from the quiet bar, and a final newline.
+    CHECK(drawn.find("1/2 tiles") != std::string::npos);
+    CHECK(drawn.find("2/2 tiles") != std::string::npos);
+    CHECK(drawn.find("1/2 tiles") == drawn.rfind("1/2 tiles"));
+    CHECK(drawn.ends_with("\r\n"));  // the terminal turns the newline into CR LF
+}
+
+TEST_CASE("Ctrl-C sets the stop flag instead of ending the process", "[app]") {
+    struct sigaction before {};
+    sigaction(SIGINT, nullptr, &before);
+    {
+        StopOnInterrupt stop;
+        CHECK_FALSE(stop.interrupted());
+        std::raise(SIGINT);
+        CHECK(stop.interrupted());
+        CHECK(stop.flag().load());
+    }
+    // The previous handler is back.
+    struct sigaction after {};
+    sigaction(SIGINT, nullptr, &after);
+    CHECK(after.sa_handler == before.sa_handler);
+    // A new one starts unset.
+    StopOnInterrupt again;
+    CHECK_FALSE(again.interrupted());
+}
