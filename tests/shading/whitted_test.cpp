@@ -4,12 +4,14 @@
 #include <rtlab/geometry/sphere.hpp>
 #include <rtlab/shading/optics.hpp>
 #include <rtlab/shading/whitted.hpp>
+#include <rtlab/textures/cube_map.hpp>
 
 #include <catch2/catch.hpp>
 #include <test_meshes.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -413,4 +415,22 @@ TEST_CASE("area light samples are a pure function of the sample key", "[whitted]
     int differ = 0;
     for (std::uint32_t i = 1; i < 20; ++i) differ += w.radiance(ray, SampleKey{7, 10, 20, i, 0}, s) != a;
     CHECK(differ >= 15);
+}
+
+TEST_CASE("escaping rays see the cube map in their direction, through a mirror too", "[whitted]") {
+    // Six one-colour faces (px nx py ny pz nz): a ray leaving along an axis sees that face's colour.
+    std::array<Image, 6> faces;
+    for (int f = 0; f < 6; ++f) faces[f] = Image(4, 4, RGB(0.1f * static_cast<float>(f + 1)));
+    WhittedOptions o;
+    o.environment = std::make_shared<CubeMapTexture>(std::move(faces));
+    ShapeList scene;
+    scene.add(quad(Point3(-1, -1, -5), Vec3(2, 0, 0), Vec3(0, 2, 0)), material("mirror"));  // faces +z
+    const WhittedIntegrator w(scene, {}, o);
+    RayStats s;
+    CHECK(w.radiance(Ray{Point3(0.0f), Vec3(1, 0, 0)}, {}, s).g == Approx(0.1f));
+    CHECK(w.radiance(Ray{Point3(0.0f), Vec3(0, -3, 0)}, {}, s).g == Approx(0.4f));
+    CHECK(w.radiance(Ray{Point3(0.0f), Vec3(0, 0, 1)}, {}, s).g == Approx(0.5f));
+    // Straight into the mirror: back along +z.
+    CHECK(w.radiance(Ray{Point3(0.0f), Vec3(0, 0, -1)}, {}, s).g == Approx(0.5f));
+    CHECK(s.reflected == 1);
 }

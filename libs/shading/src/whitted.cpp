@@ -92,7 +92,7 @@ RGB WhittedIntegrator::transmittance(const SurfaceHit& from, const LightSample& 
     return through;
 }
 
-RGB WhittedIntegrator::trace(const Ray& ray, SampleKey key, int depth, int crossings, float weight,
+RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, int crossings, float weight,
                              RayStats& stats) const {
     const float dlen = glm::length(ray.direction);
     if (!(dlen > 0.0f) || !std::isfinite(dlen)) return {};
@@ -119,7 +119,6 @@ RGB WhittedIntegrator::trace(const Ray& ray, SampleKey key, int depth, int cross
     q.point = object_point(hit);
     q.direction = d;
     const SurfaceTerms t = material.terms(q);
-    key.bounce += static_cast<std::uint32_t>(depth);
 
     // A cut-out lets 1 - opacity through, as if the surface were not there (not counted as a bounce).
     RGB behind;
@@ -134,12 +133,14 @@ RGB WhittedIntegrator::trace(const Ray& ray, SampleKey key, int depth, int cross
     if (material.reflects_direct_light()) {
         const Frame frame = shading_frame(ns, hit.tangent);
         const Vec3 wo_local = frame.to_local(wo);
+        SampleKey here = key;  // children get the caller's key and add their own depth
+        here.bounce += static_cast<std::uint32_t>(depth);
         std::uint32_t dim = kLightDimension;
         for (const auto& light : m_lights) {
             L += t.diffuse * light->ambient();
             const int n = light->sample_count();
             for (int i = 0; i < n; ++i, dim += 2) {
-                const LightSample s = light->sample(hit.point, i, sample_uniform2(key, dim), m_options.convention);
+                const LightSample s = light->sample(hit.point, i, sample_uniform2(here, dim), m_options.convention);
                 // Light from below the true surface would have to pass through it.
                 if (s.arriving.is_black() || !(glm::dot(s.wi, ng) > 0.0f)) continue;
                 const RGB f = material.direct(t, wo_local, frame.to_local(s.wi), m_options.convention);

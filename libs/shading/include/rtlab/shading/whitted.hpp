@@ -56,7 +56,7 @@ public:
     const WhittedOptions& options() const { return m_options; }
 
 private:
-    RGB trace(const Ray& ray, SampleKey key, int depth, int crossings, float weight, RayStats& stats) const;
+    RGB trace(const Ray& ray, const SampleKey& key, int depth, int crossings, float weight, RayStats& stats) const;
     RGB escaped(const Ray& ray) const;
 
     const SceneQuery& m_scene;
