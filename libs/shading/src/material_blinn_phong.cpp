@@ -6,7 +6,7 @@
 //   exponent   exponent (>= 0), number or texture (grey)           default 25
 //   + the Whitted terms of every material (shading_params.cpp: kWhittedDoc)
 //
-// physical: the energy-normalised BlinnPhongBrdf (kd / pi + ks (e + 8) / (8 pi) (n.h)^e) times cos(theta_i);
+// physical: the energy-normalised BlinnPhongBrdf (kd / pi + ks c(e) (n.h)^e, brdf.hpp) times cos(theta_i);
 // classic: kd (n.l) + ks (n.h)^e, h = (l + v) / |l + v|.
 #include <rtlab/shading/brdf.hpp>
 
@@ -54,7 +54,7 @@ void register_blinn_phong(MaterialRegistry& registry) {
             return std::make_shared<BlinnPhongMaterial>(read_whitted(p, {}), std::move(kd), std::move(ks),
                                                         std::move(e));
         },
-        std::string("Blinn-Phong: physical kd / pi + ks (e + 8) / (8 pi) (n.h)^e; classic kd (n.l) + ks (n.h)^e. "
+        std::string("Blinn-Phong: physical kd / pi + ks c(e) (n.h)^e, normalised; classic kd (n.l) + ks (n.h)^e. "
                     "kd: colour or texture (default 0.8); ks (default 0.2); exponent: number or texture "
                     "(default 25).") +
             kWhittedDoc);
