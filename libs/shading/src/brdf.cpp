@@ -1,6 +1,8 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/shading/brdf.hpp>
 
+#include "brdf_local.hpp"
+
 #include <cmath>
 #include <string>
 
@@ -26,20 +28,26 @@ PhongBrdf::PhongBrdf(const RGB& kd, const RGB& ks, float exponent) : m_kd(kd), m
 RGB PhongBrdf::eval(const Vec3& wo, const Vec3& wi) const {
     if (!same_hemisphere_above(wo, wi)) return {};
     const Vec3 mirror(-wo.x, -wo.y, wo.z);  // reflection of wo about +z
-    const float cos_alpha = std::max(0.0f, glm::dot(mirror, wi));
-    const float lobe = (m_exponent + 2.0f) * (0.5f * kInvPi) * std::pow(cos_alpha, m_exponent);
+    // cos(alpha) = 1 - |mirror - wi|^2 / 2 for unit vectors.
+    const Vec3 d = mirror - wi;
+    const float lobe = (m_exponent + 2.0f) * (0.5f * kInvPi) * detail::pow_one_minus(0.5f * glm::dot(d, d), m_exponent);
     return m_kd * kInvPi + m_ks * lobe;
 }
 
 BlinnPhongBrdf::BlinnPhongBrdf(const RGB& kd, const RGB& ks, float exponent)
     : m_kd(kd), m_ks(ks), m_exponent(exponent) {
     check_exponent(exponent, "blinn-phong");
+    // At normal incidence (theta_i = 2 theta_h, d wi = 4 cos(theta_h) d h) the lobe's albedo is
+    // 8 pi (e + 2^(-e/2)) / ((e + 2)(e + 4)) times its constant; c(e) makes that exactly 1.
+    const double e = exponent;
+    m_norm = static_cast<float>((e + 2.0) * (e + 4.0) / (8.0 * std::numbers::pi * (e + std::exp2(-0.5 * e))));
 }
 
 RGB BlinnPhongBrdf::eval(const Vec3& wo, const Vec3& wi) const {
     if (!same_hemisphere_above(wo, wi)) return {};
-    const Vec3 h = glm::normalize(wo + wi);
-    const float lobe = (m_exponent + 8.0f) * (0.125f * kInvPi) * std::pow(std::max(0.0f, h.z), m_exponent);
+    const Vec3 h = detail::half_vector(wo, wi);
+    // cos(theta_h)^e = (1 - sin^2)^(e / 2).
+    const float lobe = m_norm * detail::pow_one_minus(h.x * h.x + h.y * h.y, 0.5f * m_exponent);
     return m_kd * kInvPi + m_ks * lobe;
 }
 

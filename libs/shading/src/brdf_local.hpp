@@ -1,0 +1,41 @@
+#pragma once
+// Checks and frame helpers shared by the BRDF sources (private to the shading library).
+#include <rtlab/core/color.hpp>
+#include <rtlab/core/error.hpp>
+#include <rtlab/core/math.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace rtlab::detail {
+
+/// Both directions strictly above the surface: every BRDF is black otherwise.
+inline bool both_above(const Vec3& wo, const Vec3& wi) { return wo.z > 0.0f && wi.z > 0.0f; }
+
+/// The half vector of two directions above the surface. Their sum has |sum| >= cos_o + cos_i > 0, but for
+/// opposite directions within 1e-19 of the horizon its square underflows; the limit there is n.
+inline Vec3 half_vector(const Vec3& wo, const Vec3& wi) {
+    const Vec3 sum = wo + wi;
+    const float len2 = glm::dot(sum, sum);
+    return len2 > 0.0f ? sum / std::sqrt(len2) : Vec3(0.0f, 0.0f, 1.0f);
+}
+
+/// (1 - x)^e for x in [0, 1], from x rather than from 1 - x: the cosines of narrow lobes round to multiples of
+/// 6e-8 near 1, which an exponent of 1e4 turns into percent-level errors, while x = 1 - cos, taken from
+/// the sines, keeps full precision. 0^0 = 1, as std::pow has it.
+inline float pow_one_minus(float x, float e) {
+    if (!(x < 1.0f)) return e == 0.0f ? 1.0f : 0.0f;
+    return std::exp(e * std::log1p(-std::max(0.0f, x)));
+}
+
+inline void check_parameter(bool ok, const char* model, const char* what, const std::string& got) {
+    if (!ok) throw Error(std::string(model) + ": " + what + ", got " + got);
+}
+
+inline void check_colour(const RGB& c, const char* model, const char* name) {
+    const bool ok = c.is_finite() && c.r >= 0.0f && c.g >= 0.0f && c.b >= 0.0f;
+    check_parameter(ok, model, (std::string(name) + " must be finite and >= 0").c_str(),
+                    std::to_string(c.r) + " " + std::to_string(c.g) + " " + std::to_string(c.b));
+}
+
+}  // namespace rtlab::detail
