@@ -8,6 +8,7 @@
 #include "shared_data.hpp"
 
 #include <fstream>
+#include <limits>
 
 using namespace rtlab;
 using Catch::Matchers::Contains;
@@ -65,6 +66,66 @@ TEST_CASE("PNG round trip is within half an 8-bit sRGB step", "[image]") {
     write_png(clamp, dir / "c.png");
     const Image c = read_image(dir / "c.png");
     CHECK(c.at(0, 0) == RGB(1.0f, 0.0f, 0.0f));
+}
+
+TEST_CASE("RGBA PNG keeps every 8-bit alpha code exactly and never sRGB-decodes it", "[image]") {
+    // 256 x 1: alpha code c at column c, colour 0.2 everywhere.
+    Image img(256, 1, RGB(0.2f));
+    img.add_alpha();
+    for (int c = 0; c < 256; ++c) img.alpha_at(c, 0) = static_cast<float>(c) / 255.0f;
+    write_png(img, dir / "alpha.png");
+    for (ColorEncoding encoding : {ColorEncoding::srgb, ColorEncoding::linear}) {
+        const Image back = read_image(dir / "alpha.png", encoding);
+        REQUIRE(back.has_alpha());
+        REQUIRE(back.alphas().size() == 256);
+        int wrong = 0;
+        for (int c = 0; c < 256; ++c) wrong += back.alpha(c, 0) == static_cast<float>(c) / 255.0f ? 0 : 1;
+        CHECK(wrong == 0);
+        CHECK(back.alpha(0, 0) == 0.0f);
+        CHECK(back.alpha(255, 0) == 1.0f);
+        // Colour is still decoded as asked; alpha code 128 is 128 / 255, not the sRGB decode 0.216.
+        const float expected = encoding == ColorEncoding::srgb ? 0.2f : srgb_encode(0.2f);
+        CHECK(back.at(128, 0).r == Approx(expected).margin(0.003f));
+        CHECK(back.alpha(128, 0) == Approx(0.50196f).epsilon(1e-4));
+    }
+    // Out-of-range and NaN alpha are clamped to [0, 1] on writing; rounding is to the nearest code.
+    Image odd(5, 1);
+    odd.add_alpha(0.25f);
+    odd.alpha_at(0, 0) = -2.0f;
+    odd.alpha_at(1, 0) = 7.0f;
+    odd.alpha_at(2, 0) = std::numeric_limits<float>::quiet_NaN();
+    odd.alpha_at(3, 0) = 0.5f / 255.0f + 1e-4f;  // just past half a code: rounds up to code 1
+    write_png(odd, dir / "odd_alpha.png");
+    const Image o = read_image(dir / "odd_alpha.png");
+    CHECK(o.alpha(0, 0) == 0.0f);
+    CHECK(o.alpha(1, 0) == 1.0f);
+    CHECK(o.alpha(2, 0) == 0.0f);
+    CHECK(o.alpha(3, 0) == 1.0f / 255.0f);
+    CHECK(o.alpha(4, 0) == 64.0f / 255.0f);  // 0.25 * 255 = 63.75 -> 64
+}
+
+TEST_CASE("images without alpha have alpha 1 everywhere and keep the old API", "[image]") {
+    Image img(3, 2, RGB(0.5f));
+    CHECK_FALSE(img.has_alpha());
+    CHECK(img.alphas().empty());
+    CHECK(img.alpha(2, 1) == 1.0f);
+    img.add_alpha(0.25f);
+    REQUIRE(img.has_alpha());
+    CHECK(img.alpha(2, 1) == 0.25f);
+    img.alpha_at(2, 1) = 0.75f;
+    img.add_alpha(0.0f);  // an existing plane is kept
+    CHECK(img.alpha(2, 1) == 0.75f);
+    CHECK(img.alpha(0, 0) == 0.25f);
+    CHECK(img.at(2, 1) == RGB(0.5f));
+    // RGB PNG, HDR and PFM files read back without an alpha plane; writing an RGBA image to them drops alpha.
+    write_image(Image(2, 2, RGB(0.5f)), dir / "rgb.png");
+    CHECK_FALSE(read_image(dir / "rgb.png").has_alpha());
+    for (const char* name : {"a.hdr", "a.pfm"}) {
+        write_image(img, dir / name);
+        const Image back = read_image(dir / name);
+        CHECK_FALSE(back.has_alpha());
+        CHECK(back.alpha(1, 1) == 1.0f);
+    }
 }
 
 TEST_CASE("HDR round trip is within RGBE's relative precision", "[image]") {

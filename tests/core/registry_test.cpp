@@ -79,3 +79,18 @@ TEST_CASE("params: typed getters", "[registry]") {
     CHECK_THROWS_WITH(p.get_object<Ball>("inner"), Contains("'inner' must be"));
     CHECK_NOTHROW(p.check_all_used());
 }
+
+TEST_CASE("params: get_value gives the raw value and marks it as read", "[registry]") {
+    Params p;
+    p.set("x", 0.5).set("s", std::string("word"));
+    p.set_context("test 'p'");
+    CHECK(p.get_value("absent") == nullptr);
+    CHECK_THROWS_WITH(p.check_all_used(), Contains("'s', 'x'"));
+    const Params::Value* x = p.get_value("x");
+    REQUIRE(x != nullptr);
+    CHECK(std::get<Params::Number>(*x) == 0.5);
+    CHECK_THROWS_WITH(p.check_all_used(), Contains("'s'") && !Contains("'x'"));
+    REQUIRE(p.get_value("s") != nullptr);
+    CHECK(std::holds_alternative<std::string>(*p.get_value("s")));
+    CHECK_NOTHROW(p.check_all_used());
+}

@@ -59,7 +59,7 @@ TEST_CASE("checker selects between two nested textures", "[checker]") {
     const auto inner = registry().create("checker", Params{}.set("tiles_u", 40.0).set("tiles_v", 40.0));
     Params p;
     p.set("tiles_u", 1.0).set("color2", Params::List{0.0, 0.0, 1.0});
-    p.set_object<Texture>("texture1", inner);
+    p.set_object<Texture>("color1", inner);
     const auto t = registry().create("checker", p);
     CHECK(t->eval(TextureLookup{{0.01f, 0.01f}, {}, {}}) == RGB(1.0f));    // outer even, inner (0, 0) even
     CHECK(t->eval(TextureLookup{{0.03f, 0.01f}, {}, {}}) == RGB(0.0f));    // outer even, inner (1, 0) odd

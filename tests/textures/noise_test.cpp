@@ -154,7 +154,8 @@ TEST_CASE("noise far from the origin is finite and periodic and resolves small s
     Rng rng(17);
     for (int n = 0; n < 200; ++n) {
         const double f = uniform(rng, 0, 1), g = uniform(rng, 0, 1), e = uniform(rng, 0, 1);
-        REQUIRE(perlin.eval(1e5 + f, 1e5 + g, -1e5 + e) == Approx(perlin.eval(160 + f, 160 + g, -160 + e)).margin(1e-6));
+        REQUIRE(perlin.eval(1e5 + f, 1e5 + g, -1e5 + e) ==
+                Approx(perlin.eval(160 + f, 160 + g, -160 + e)).margin(1e-6));
         REQUIRE(perlin.eval(1e5 + f, -1e5 + g) == Approx(perlin.eval(160 + f, -160 + g)).margin(1e-6));
     }
     // Steps of 1e-3 at 1e5 all give different values (float coordinates would plateau over 7.8e-3), and
@@ -247,4 +248,20 @@ TEST_CASE("noise textures map patterns to colours in 2D and 3D", "[noise]") {
     // Plain noise: t = 0.5 + 0.5 n, so at an integer point (n = 0) the colour is the mid blend.
     const auto mid = r.create("perlin", Params{}.set("dimension", 3.0));
     CHECK(mid->eval(TextureLookup{{}, {2.0f, -3.0f, 5.0f}, {}}) == RGB(0.5f));
+}
+
+TEST_CASE("noise colours may be nested textures that see the same lookup", "[noise]") {
+    const TextureRegistry r = make_texture_registry();
+    // color1: a uv checker of 1 (even) and 0 (odd) tiles, 2 per unit; color2: constant 0.5 in blue only.
+    const auto checker = r.create("checker", Params{}.set("tiles_u", 2.0));
+    Params p;
+    p.set("dimension", 3.0).set("color2", Params::List{0.0, 0.0, 0.5});
+    p.set_object<Texture>("color1", checker);
+    const auto t = r.create("perlin", p);
+    // At an integer point n = 0, so t = 0.5: half the checker plus half of color2.
+    CHECK(t->eval(TextureLookup{{0.1f, 0.1f}, {2.0f, -3.0f, 5.0f}, {}}) == RGB(0.5f, 0.5f, 0.75f));  // even tile
+    CHECK(t->eval(TextureLookup{{0.6f, 0.1f}, {2.0f, -3.0f, 5.0f}, {}}) == RGB(0.0f, 0.0f, 0.25f));  // odd tile
+    // A non-finite point gives color1 unblended: the checker itself.
+    CHECK(t->eval(TextureLookup{{0.6f, 0.1f}, {std::nanf(""), 0.0f, 0.0f}, {}}) == RGB(0.0f));
+    CHECK(t->eval(TextureLookup{{0.1f, 0.1f}, {std::nanf(""), 0.0f, 0.0f}, {}}) == RGB(1.0f));
 }

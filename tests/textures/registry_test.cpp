@@ -44,14 +44,17 @@ TEST_CASE("every built-in texture is registered with a documented parameter list
     CHECK(r.category() == "texture");
     // Each doc names the parameters with their defaults.
     CHECK_THAT(r.doc("solid"), Contains("color") && Contains("default 1"));
-    CHECK_THAT(r.doc("checker"), Contains("tiles_u") && Contains("tiles_v") && Contains("texture1") &&
-                                     Contains("texture2") && Contains("default 8"));
-    CHECK_THAT(r.doc("checker3d"), Contains("tiles") && Contains("color1"));
+    CHECK_THAT(r.doc("checker"), Contains("tiles_u") && Contains("tiles_v") && Contains("default 8") &&
+                                     Contains("color1: even tiles, a colour or a texture (default 1)") &&
+                                     Contains("color2: odd tiles, a colour or a texture (default 0)"));
+    CHECK_THAT(r.doc("checker3d"), Contains("tiles") && Contains("color1: even cells, a colour or a texture") &&
+                                       Contains("color2: odd cells, a colour or a texture"));
     CHECK_THAT(r.doc("mandelbrot"), Contains("iterations") && Contains("escape_radius") && Contains("center") &&
                                         Contains("zoom") && Contains("inside") && Contains("smooth"));
     for (const char* noise : {"perlin", "simplex"})
         CHECK_THAT(r.doc(noise), Contains("octaves") && Contains("lacunarity") && Contains("gain") &&
-                                     Contains("turbulence") && Contains("marble") && Contains("default 6"));
+                                     Contains("turbulence") && Contains("marble") && Contains("default 6") &&
+                                     Contains("color1: a colour or a texture (default 0)"));
     CHECK_THAT(r.doc("image"), Contains("filename") && Contains("wrap") && Contains("mirror") && Contains("scale") &&
                                    Contains("offset"));
     CHECK_THAT(r.doc("cubemap"), Contains("px nx py ny pz nz") && Contains("cross"));
@@ -69,7 +72,7 @@ TEST_CASE("a texture defined outside the library registers and nests like a buil
     // Nested inside a built-in checker, passed as an object parameter.
     Params p;
     p.set("tiles_u", 1.0).set("tiles_v", 1.0).set("color2", 0.5);
-    p.set_object<Texture>("texture1", stripes);
+    p.set_object<Texture>("color1", stripes);
     const auto checker = r.create("checker", p);
     CHECK(checker->eval(at_uv(0.1f, 0.5f)) == RGB(0.0f, 1.0f, 0.0f));  // tile (0, 0): stripes, first stripe
     CHECK(checker->eval(at_uv(0.3f, 0.5f)) == RGB(0.0f));               // tile (0, 0): stripes, second stripe
@@ -87,9 +90,19 @@ TEST_CASE("parameter errors name the texture and the parameter", "[registry]") {
                       Contains("texture 'checker'") && Contains("'tiles_u' must be finite and > 0"));
     CHECK_THROWS_WITH(r.create("checker", Params{}.set("tiles_u", std::string("many"))),
                       Contains("'tiles_u' must be a number"));
-    Params both;
-    both.set("color1", 0.5).set_object<Texture>("texture1", r.create("solid", Params{}));
-    CHECK_THROWS_WITH(r.create("checker", both), Contains("'color1'") && Contains("'texture1'"));
+    // The old two-key form (color1 or texture1) is gone: texture1 is an unknown parameter.
+    Params old;
+    old.set_object<Texture>("texture1", r.create("solid", Params{}));
+    CHECK_THROWS_WITH(r.create("checker", old),
+                      Contains("texture 'checker'") && Contains("unused parameter(s) 'texture1'"));
+    CHECK_THROWS_WITH(r.create("checker", Params{}.set("color2", std::string("red"))),
+                      Contains("texture 'checker': parameter 'color2' must be a colour (one number or a list of 3) or "
+                               "a texture, not a string"));
+    CHECK_THROWS_WITH(r.create("checker3d", Params{}.set("color1", Params::List{0.0, 1e300, 0.0})),
+                      Contains("texture 'checker3d': parameter 'color1' must be finite"));
+    CHECK_THROWS_WITH(
+        r.create("simplex", Params{}.set("color2", Params::List{0.5, 0.5})),
+        Contains("texture 'simplex': parameter 'color2' must be a colour") && Contains("a list of 2 numbers"));
     CHECK_THROWS_WITH(r.create("mandelbrot", Params{}.set("escape_radius", 1.5)), Contains("'escape_radius' must be >= 2"));
     CHECK_THROWS_WITH(r.create("mandelbrot", Params{}.set("iterations", 0.0)), Contains("'iterations' must be in [1"));
     CHECK_THROWS_WITH(r.create("mandelbrot", Params{}.set("center", Params::List{1, 2, 3})), Contains("'center'"));

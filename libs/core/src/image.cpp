@@ -95,12 +95,23 @@ Image decode_pfm(const std::vector<unsigned char>& bytes, const std::filesystem:
     return image;
 }
 
+// data holds `channels` (3, or 4 with alpha) values per pixel; colour goes through to_linear, alpha is
+// divided by alpha_max only (it is coverage, never sRGB-encoded), so the full code gives exactly 1.
 template <class T>
-Image copy_pixels(const T* data, int w, int h, auto&& to_linear) {
+Image copy_pixels(const T* data, int w, int h, int channels, float alpha_max, auto&& to_linear) {
     Image image(w, h);
+    if (channels == 4) image.add_alpha();
     auto pixels = image.pixels();
-    for (std::size_t i = 0; i < pixels.size(); ++i)
-        pixels[i] = RGB(to_linear(data[3 * i]), to_linear(data[3 * i + 1]), to_linear(data[3 * i + 2]));
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+        const T* p = data + static_cast<std::size_t>(channels) * i;
+        pixels[i] = RGB(to_linear(p[0]), to_linear(p[1]), to_linear(p[2]));
+    }
+    if (channels == 4) {
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                image.alpha_at(x, y) =
+                    static_cast<float>(data[4 * (static_cast<std::size_t>(y) * w + x) + 3]) / alpha_max;
+    }
     return image;
 }
 
@@ -109,6 +120,10 @@ Image copy_pixels(const T* data, int w, int h, auto&& to_linear) {
 Image::Image(int width, int height, RGB fill) : m_width(width), m_height(height) {
     if (width < 0 || height < 0) throw Error("image size must not be negative");
     m_pixels.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill);
+}
+
+void Image::add_alpha(float fill) {
+    if (m_alpha.empty()) m_alpha.assign(m_pixels.size(), fill);
 }
 
 Image read_pfm(const std::filesystem::path& path) { return decode_pfm(read_binary_file(path), path); }
@@ -126,24 +141,27 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     if (stb::is_hdr(bytes.data(), size)) {
         float* data = stb::load_float(bytes.data(), size, &w, &h);
         check(data);
-        Image image = copy_pixels(data, w, h, [](float v) { return v; });
+        Image image = copy_pixels(data, w, h, 3, 1.0f, [](float v) { return v; });
         stb::free_image(data);
         return image;
     }
     const bool srgb = encoding == ColorEncoding::srgb;
+    // Grey + alpha and RGBA files keep their alpha; stb expands grey to RGB.
+    const int in_file = stb::file_channels(bytes.data(), size);
+    const int channels = in_file == 2 || in_file == 4 ? 4 : 3;
     if (stb::is_16bit(bytes.data(), size)) {
-        unsigned short* data = stb::load_16bit(bytes.data(), size, &w, &h);
+        unsigned short* data = stb::load_16bit(bytes.data(), size, &w, &h, channels);
         check(data);
-        Image image = copy_pixels(data, w, h, [srgb](unsigned short v) {
+        Image image = copy_pixels(data, w, h, channels, 65535.0f, [srgb](unsigned short v) {
             const float f = static_cast<float>(v) / 65535.0f;
             return srgb ? srgb_decode(f) : f;
         });
         stb::free_image(data);
         return image;
     }
-    unsigned char* data = stb::load_8bit(bytes.data(), size, &w, &h);
+    unsigned char* data = stb::load_8bit(bytes.data(), size, &w, &h, channels);
     check(data);
-    Image image = copy_pixels(data, w, h, [srgb](unsigned char v) {
+    Image image = copy_pixels(data, w, h, channels, 255.0f, [srgb](unsigned char v) {
         return srgb ? srgb_decode_8bit(v) : static_cast<float>(v) / 255.0f;
     });
     stb::free_image(data);
@@ -152,12 +170,21 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
 
 void write_png(const Image& image, const std::filesystem::path& path) {
     if (image.empty()) fail(path, "cannot write an empty image");
-    std::vector<unsigned char> rgb;
-    rgb.reserve(image.pixel_count() * 3);
-    for (const RGB& p : image.pixels())
-        for (int k = 0; k < 3; ++k) rgb.push_back(srgb_encode_8bit(p[k]));
+    const int channels = image.has_alpha() ? 4 : 3;
+    std::vector<unsigned char> bytes;
+    bytes.reserve(image.pixel_count() * channels);
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            for (int k = 0; k < 3; ++k) bytes.push_back(srgb_encode_8bit(image.at(x, y)[k]));
+            if (channels == 4) {
+                const float a = image.alpha(x, y);  // linear; NaN is written as 0, like colour
+                bytes.push_back(a >= 0.0f ? static_cast<unsigned char>(std::lround(std::min(a, 1.0f) * 255.0f)) : 0);
+            }
+        }
+    }
     std::vector<unsigned char> encoded;
-    if (!stb::encode_png(encoded, image.width(), image.height(), rgb.data())) fail(path, "PNG encoding failed");
+    if (!stb::encode_png(encoded, image.width(), image.height(), channels, bytes.data()))
+        fail(path, "PNG encoding failed");
     write_binary_file(path, encoded);
 }
 

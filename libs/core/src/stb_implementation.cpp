@@ -27,13 +27,17 @@ float* load_float(const unsigned char* data, int size, int* w, int* h) {
     int channels = 0;
     return stbi_loadf_from_memory(data, size, w, h, &channels, 3);
 }
-unsigned char* load_8bit(const unsigned char* data, int size, int* w, int* h) {
-    int channels = 0;
-    return stbi_load_from_memory(data, size, w, h, &channels, 3);
+unsigned char* load_8bit(const unsigned char* data, int size, int* w, int* h, int channels) {
+    int in_file = 0;
+    return stbi_load_from_memory(data, size, w, h, &in_file, channels);
 }
-unsigned short* load_16bit(const unsigned char* data, int size, int* w, int* h) {
-    int channels = 0;
-    return stbi_load_16_from_memory(data, size, w, h, &channels, 3);
+unsigned short* load_16bit(const unsigned char* data, int size, int* w, int* h, int channels) {
+    int in_file = 0;
+    return stbi_load_16_from_memory(data, size, w, h, &in_file, channels);
+}
+int file_channels(const unsigned char* data, int size) {
+    int w = 0, h = 0, channels = 0;
+    return stbi_info_from_memory(data, size, &w, &h, &channels) ? channels : 0;
 }
 bool is_hdr(const unsigned char* data, int size) { return stbi_is_hdr_from_memory(data, size) != 0; }
 bool is_16bit(const unsigned char* data, int size) { return stbi_is_16_bit_from_memory(data, size) != 0; }
@@ -48,8 +52,8 @@ void append(void* context, void* data, int size) {
 }
 }  // namespace
 
-bool encode_png(std::vector<unsigned char>& out, int w, int h, const unsigned char* rgb) {
-    return stbi_write_png_to_func(append, &out, w, h, 3, rgb, w * 3) != 0;
+bool encode_png(std::vector<unsigned char>& out, int w, int h, int channels, const unsigned char* pixels) {
+    return stbi_write_png_to_func(append, &out, w, h, channels, pixels, w * channels) != 0;
 }
 bool encode_hdr(std::vector<unsigned char>& out, int w, int h, const float* rgb) {
     return stbi_write_hdr_to_func(append, &out, w, h, 3, rgb) != 0;

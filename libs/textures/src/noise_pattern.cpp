@@ -17,8 +17,8 @@ NoiseSettings read_noise_settings(const Params& p) {
     s.stripes = positive_float(p, "stripes", 1.0f, true);
     s.distortion = p.get_float("distortion", 4.0f);
     if (!std::isfinite(s.distortion)) fail_param(p, "distortion", "must be finite");
-    s.color1 = finite_rgb(p, "color1", RGB(0.0f));
-    s.color2 = finite_rgb(p, "color2", RGB(1.0f));
+    s.color1 = texture_param(p, "color1", 0.0f);
+    s.color2 = texture_param(p, "color2", 1.0f);
     s.seed = static_cast<std::uint64_t>(bounded_int(p, "seed", 0, 0, 2147483647));
     return s;
 }
@@ -30,7 +30,8 @@ std::string noise_doc(const std::string& what) {
            "noise and fbm give t = 0.5 + 0.5 n, turbulence t = sum |n|, marble t = 0.5 + 0.5 sin(2 pi stripes x + "
            "distortion turbulence); scale: coordinate multiplier (default 1); octaves 1..24 (default 6); "
            "lacunarity (default 2); gain (default 0.5); stripes >= 0 (default 1); distortion (default 4); "
-           "color1 (default 0); color2 (default 1); seed: permutation seed 0..2^31-1 (default 0)";
+           "color1: a colour or a texture (default 0); color2: a colour or a texture (default 1); seed: permutation "
+           "seed 0..2^31-1 (default 0)";
 }
 
 }  // namespace rtlab::detail

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 namespace rtlab::detail {
@@ -20,7 +21,7 @@ struct NoiseSettings {
     FractalParams fractal{};
     double stripes = 1.0;
     double distortion = 4.0;
-    RGB color1{0.0f}, color2{1.0f};
+    std::shared_ptr<const Texture> color1, color2;  ///< colours or nested textures
     std::uint64_t seed = 0;
 };
 
@@ -33,7 +34,8 @@ std::string noise_doc(const std::string& what);
 template <class Noise>
 class NoisePatternTexture final : public Texture {
 public:
-    explicit NoisePatternTexture(const NoiseSettings& s) : m_s(s), m_noise(s.seed) {}
+    explicit NoisePatternTexture(const NoiseSettings& s)
+        : m_s(s), m_noise(s.seed), m_constant1(s.color1->constant()), m_constant2(s.color2->constant()) {}
 
     /// The pattern value t in [0, 1] before colouring.
     float pattern(const TextureLookup& q) const {
@@ -46,7 +48,11 @@ public:
         return shade(q.point.x * s, [&](auto&& f) { return f(q.point.x * s, q.point.y * s, q.point.z * s); });
     }
 
-    RGB eval(const TextureLookup& q) const override { return lerp(m_s.color1, m_s.color2, pattern(q)); }
+    RGB eval(const TextureLookup& q) const override {
+        const RGB c1 = m_constant1 ? *m_constant1 : m_s.color1->eval(q);
+        const RGB c2 = m_constant2 ? *m_constant2 : m_s.color2->eval(q);
+        return lerp(c1, c2, pattern(q));
+    }
 
 private:
     // `at` calls its argument with the scaled coordinates (2 or 3 doubles).
@@ -76,6 +82,8 @@ private:
 
     NoiseSettings m_s;
     Noise m_noise;
+    const RGB* m_constant1;  // color1's value when it is a constant, read without a virtual call
+    const RGB* m_constant2;
 };
 
 }  // namespace rtlab::detail

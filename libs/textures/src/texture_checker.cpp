@@ -1,17 +1,16 @@
 // Texture "checker": a 2D checkerboard in uv.
 //
-// Tile (i, j) = (floor(u * tiles_u), floor(v * tiles_v)); tiles with i + j even show the first colour
-// (or texture), odd ones the second. A point exactly on a tile border belongs to the tile above it
-// (floor), also for negative coordinates: u = -0.25 with tiles_u = 4 is tile -1 (odd). The products
-// are formed in double, where float * float is exact, so borders fall exactly where the numbers say.
+// Tile (i, j) = (floor(u * tiles_u), floor(v * tiles_v)); tiles with i + j even show color1, odd ones
+// color2. A point exactly on a tile border belongs to the tile above it (floor), also for negative
+// coordinates: u = -0.25 with tiles_u = 4 is tile -1 (odd). The products are formed in double, where
+// float * float is exact, so borders fall exactly where the numbers say.
 //
 // Parameters
 //   tiles_u    tiles per unit of u, > 0                      default 8
 //   tiles_v    tiles per unit of v, > 0                      default tiles_u
-//   color1     colour of even tiles                          default 1 (white)
-//   color2     colour of odd tiles                           default 0 (black)
-//   texture1   nested texture for even tiles (instead of color1)
-//   texture2   nested texture for odd tiles (instead of color2)
+//   color1     even tiles: a colour or a texture             default 1 (white)
+//   color2     odd tiles: a colour or a texture              default 0 (black)
+// A colour is one number (grey) or [r, g, b]; a texture is an object (rtlab/textures/texture_param.hpp).
 // Nested textures see the unmodified lookup.
 #include "texture_params.hpp"
 
@@ -46,12 +45,12 @@ void register_checker(TextureRegistry& registry) {
         [](const Params& p) -> std::shared_ptr<Texture> {
             const float tu = positive_float(p, "tiles_u", 8.0f);
             const float tv = positive_float(p, "tiles_v", tu);
-            return std::make_shared<CheckerTexture>(tu, tv, colour_or_texture(p, "color1", "texture1", RGB(1.0f)),
-                                                    colour_or_texture(p, "color2", "texture2", RGB(0.0f)));
+            return std::make_shared<CheckerTexture>(tu, tv, texture_param(p, "color1", 1.0f),
+                                                    texture_param(p, "color2", 0.0f));
         },
         "2D checkerboard in uv, tile (floor(u tiles_u), floor(v tiles_v)), even tiles first. "
-        "tiles_u: tiles per unit u (default 8); tiles_v (default tiles_u); color1 (default 1) or texture1; "
-        "color2 (default 0) or texture2");
+        "tiles_u: tiles per unit u (default 8); tiles_v (default tiles_u); "
+        "color1: even tiles, a colour or a texture (default 1); color2: odd tiles, a colour or a texture (default 0)");
 }
 
 }  // namespace rtlab::detail

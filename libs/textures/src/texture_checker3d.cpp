@@ -1,14 +1,14 @@
 // Texture "checker3d": a solid (3D) checkerboard in object space, read from lookup.point.
 //
-// Cell (i, j, k) = floor(point * tiles); cells with i + j + k even show the first colour (or texture),
-// odd ones the second. Points on a cell face belong to the cell above them, as in "checker".
+// Cell (i, j, k) = floor(point * tiles); cells with i + j + k even show color1, odd ones color2. Points
+// on a cell face belong to the cell above them, as in "checker".
 //
 // Parameters
 //   tiles      cells per unit length, one number or [x, y, z], > 0   default 1
-//   color1     colour of even cells                                  default 1 (white)
-//   color2     colour of odd cells                                   default 0 (black)
-//   texture1   nested texture for even cells (instead of color1)
-//   texture2   nested texture for odd cells (instead of color2)
+//   color1     even cells: a colour or a texture                     default 1 (white)
+//   color2     odd cells: a colour or a texture                      default 0 (black)
+// A colour is one number (grey) or [r, g, b]; a texture is an object (rtlab/textures/texture_param.hpp).
+// Nested textures see the unmodified lookup.
 #include "texture_params.hpp"
 
 #include <cmath>
@@ -46,12 +46,13 @@ void register_checker3d(TextureRegistry& registry) {
                 for (int a = 0; a < 3; ++a)
                     if (!(std::isfinite(tiles[a]) && tiles[a] > 0.0f)) fail_param(p, "tiles", "must be finite and > 0");
             }
-            return std::make_shared<Checker3dTexture>(tiles, colour_or_texture(p, "color1", "texture1", RGB(1.0f)),
-                                                      colour_or_texture(p, "color2", "texture2", RGB(0.0f)));
+            return std::make_shared<Checker3dTexture>(tiles, texture_param(p, "color1", 1.0f),
+                                                      texture_param(p, "color2", 0.0f));
         },
         "solid 3D checkerboard in object space (lookup.point), cell floor(point tiles), even cells first. "
-        "tiles: cells per unit, number or [x, y, z] (default 1); color1 (default 1) or texture1; "
-        "color2 (default 0) or texture2");
+        "tiles: cells per unit, number or [x, y, z] (default 1); color1: even cells, a colour or a texture (default "
+        "1); "
+        "color2: odd cells, a colour or a texture (default 0)");
 }
 
 }  // namespace rtlab::detail

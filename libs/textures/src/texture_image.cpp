@@ -7,6 +7,11 @@
 // wrap mode decides which texels lie beyond the edges: repeat (tile), clamp (edge texels extend) or
 // mirror (tile, every other copy flipped). A missing or undecodable file is an error naming the file.
 //
+// Alpha: a file with an alpha channel (8-bit or 16-bit RGBA or grey + alpha PNG, RGBA TGA) gives the
+// texture an alpha, read linearly (never sRGB-decoded) and filtered and wrapped like the colour; other
+// files have alpha 1. Materials read opacity through rtlab::opacity(), which uses this alpha, so an RGBA
+// image works as a cut-out (Saturn's rings).
+//
 // Parameters
 //   filename   the image file (required)
 //   wrap       repeat | clamp | mirror                          default repeat
@@ -72,30 +77,49 @@ std::int64_t reduce(double i, int n, WrapMode mode) {
 }
 }  // namespace
 
-const RGB& ImageTexture::texel(std::int64_t x, std::int64_t y) const {
-    const Image& img = *m_image;
-    return img.at(wrap_index(x, img.width(), m_options.wrap), wrap_index(y, img.height(), m_options.wrap));
-}
-
-RGB ImageTexture::sample(Vec2 uv) const {
+bool ImageTexture::footprint(Vec2 uv, Footprint& f) const {
     const double u = static_cast<double>(uv.x) * m_options.scale.x + m_options.offset.x;
     const double v = static_cast<double>(uv.y) * m_options.scale.y + m_options.offset.y;
-    if (!std::isfinite(u) || !std::isfinite(v)) return {};
+    if (!std::isfinite(u) || !std::isfinite(v)) return false;
     const Image& img = *m_image;
     // Continuous texel coordinates, row 0 at the top: texel centres at integers.
     const double x = u * img.width() - 0.5;
     const double y = (1.0 - v) * img.height() - 0.5;
     const WrapMode wrap = m_options.wrap;
-    if (m_options.filter == ImageFilter::nearest)
-        return texel(reduce(std::floor(x + 0.5), img.width(), wrap), reduce(std::floor(y + 0.5), img.height(), wrap));
+    if (m_options.filter == ImageFilter::nearest) {
+        f.c0 = wrap_index(reduce(std::floor(x + 0.5), img.width(), wrap), img.width(), wrap);
+        f.r0 = wrap_index(reduce(std::floor(y + 0.5), img.height(), wrap), img.height(), wrap);
+        return true;
+    }
     const double xf = std::floor(x), yf = std::floor(y);
-    const auto fx = static_cast<float>(x - xf), fy = static_cast<float>(y - yf);
+    f.fx = static_cast<float>(x - xf), f.fy = static_cast<float>(y - yf);
     const std::int64_t x0 = reduce(xf, img.width(), wrap), y0 = reduce(yf, img.height(), wrap);
-    const int c0 = wrap_index(x0, img.width(), wrap), c1 = wrap_index(x0 + 1, img.width(), wrap);
-    const int r0 = wrap_index(y0, img.height(), wrap), r1 = wrap_index(y0 + 1, img.height(), wrap);
-    const RGB top = lerp(img.at(c0, r0), img.at(c1, r0), fx);
-    const RGB bottom = lerp(img.at(c0, r1), img.at(c1, r1), fx);
-    return lerp(top, bottom, fy);
+    f.c0 = wrap_index(x0, img.width(), wrap), f.c1 = wrap_index(x0 + 1, img.width(), wrap);
+    f.r0 = wrap_index(y0, img.height(), wrap), f.r1 = wrap_index(y0 + 1, img.height(), wrap);
+    return true;
+}
+
+RGB ImageTexture::sample(Vec2 uv) const {
+    Footprint f;
+    if (!footprint(uv, f)) return {};
+    const Image& img = *m_image;
+    if (m_options.filter == ImageFilter::nearest) return img.at(f.c0, f.r0);
+    const RGB top = lerp(img.at(f.c0, f.r0), img.at(f.c1, f.r0), f.fx);
+    const RGB bottom = lerp(img.at(f.c0, f.r1), img.at(f.c1, f.r1), f.fx);
+    return lerp(top, bottom, f.fy);
+}
+
+float ImageTexture::sample_alpha(Vec2 uv) const {
+    const Image& img = *m_image;
+    if (!img.has_alpha()) return 1.0f;
+    Footprint f;
+    if (!footprint(uv, f)) return 0.0f;
+    if (m_options.filter == ImageFilter::nearest) return img.alpha(f.c0, f.r0);
+    // The same weights and order of operations as the colour, so an opaque region (alpha 1) stays exactly 1.
+    const auto mix = [](float a, float b, float t) { return a * (1.0f - t) + b * t; };
+    const float top = mix(img.alpha(f.c0, f.r0), img.alpha(f.c1, f.r0), f.fx);
+    const float bottom = mix(img.alpha(f.c0, f.r1), img.alpha(f.c1, f.r1), f.fx);
+    return mix(top, bottom, f.fy);
 }
 
 namespace detail {

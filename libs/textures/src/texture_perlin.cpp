@@ -6,7 +6,8 @@
 //   pattern "turbulence"  t = sum_k gain^k |n(lacunarity^k p)| / sum_k gain^k
 //   pattern "marble"      t = 0.5 + 0.5 sin(2 pi stripes p.x + distortion turbulence(p))
 // where p = scale * uv (dimension 2) or scale * lookup.point (dimension 3, object space). A non-finite
-// p gives t = 0.
+// p gives t = 0. color1 and color2 are each a colour (one number or [r, g, b]) or a nested texture, which
+// sees the unmodified lookup (rtlab/textures/texture_param.hpp).
 //
 // Parameters
 //   dimension    2 (uv) or 3 (object-space point)         default 3
@@ -17,8 +18,8 @@
 //   gain         amplitude ratio between octaves, > 0      default 0.5
 //   stripes      marble stripes per unit of p.x, >= 0      default 1
 //   distortion   marble turbulence strength                default 4
-//   color1       colour at t = 0                           default 0
-//   color2       colour at t = 1                           default 1
+//   color1       colour or texture at t = 0                default 0
+//   color2       colour or texture at t = 1                default 1
 //   seed         permutation seed, 0 .. 2^31 - 1           default 0
 #include <rtlab/textures/perlin_noise.hpp>
 

@@ -11,20 +11,19 @@ class SolidTexture final : public Texture {
 public:
     explicit SolidTexture(const RGB& colour) : m_colour(colour) {}
     RGB eval(const TextureLookup&) const override { return m_colour; }
+    const RGB* constant() const override { return &m_colour; }
 
 private:
     RGB m_colour;
 };
 }  // namespace
 
-std::shared_ptr<const Texture> make_constant(const RGB& colour) { return std::make_shared<SolidTexture>(colour); }
+std::shared_ptr<Texture> make_solid(const RGB& colour) { return std::make_shared<SolidTexture>(colour); }
 
 void register_solid(TextureRegistry& registry) {
     registry.add(
         "solid",
-        [](const Params& p) -> std::shared_ptr<Texture> {
-            return std::make_shared<SolidTexture>(finite_rgb(p, "color", RGB(1.0f)));
-        },
+        [](const Params& p) -> std::shared_ptr<Texture> { return make_solid(finite_rgb(p, "color", RGB(1.0f))); },
         "one colour everywhere. color: colour (default 1)");
 }
 

@@ -51,6 +51,10 @@ public:
     RGB get_rgb(std::string_view name, const RGB& fallback) const;
     List get_list(std::string_view name) const;
 
+    /// The value stored under name (marked as read), or nullptr: for parameters that accept several kinds,
+    /// such as "a colour or a texture".
+    const Value* get_value(std::string_view name) const { return find(name); }
+
     /// The object stored under name, or nullptr when there is none; an object of another type is an error.
     template <class T>
     std::shared_ptr<T> get_object(std::string_view name) const {

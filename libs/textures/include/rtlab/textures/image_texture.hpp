@@ -3,7 +3,6 @@
 #include <rtlab/core/image.hpp>
 #include <rtlab/textures/texture.hpp>
 
-#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string_view>
@@ -27,6 +26,7 @@ struct ImageTextureOptions {
 /// \brief Image texture. Texel (x, y) covers u in [x/W, (x+1)/W] and v in [1-(y+1)/H, 1-y/H]: u to the
 /// right, v up, so v = 0 is the image's bottom row (the OpenGL / pbrt convention). Bilinear filtering
 /// interpolates between texel centres, wrapping the neighbours with the wrap mode. Non-finite uv gives black.
+/// An image with an alpha plane (an RGBA file) also answers alpha(), filtered and wrapped the same way.
 class ImageTexture final : public Texture {
 public:
     /// The image must not be empty. 8-bit files are already linear here (read_image decodes sRGB).
@@ -36,11 +36,21 @@ public:
                                               ColorEncoding encoding = ColorEncoding::srgb);
 
     RGB eval(const TextureLookup& lookup) const override { return sample(lookup.uv); }
+    bool has_alpha() const override { return m_image->has_alpha(); }
+    float alpha(const TextureLookup& lookup) const override { return sample_alpha(lookup.uv); }
     RGB sample(Vec2 uv) const;
+    /// The image's alpha at uv: 1 without an alpha plane; 0 for non-finite uv (nothing there, as the black colour).
+    float sample_alpha(Vec2 uv) const;
     const Image& image() const { return *m_image; }
 
 private:
-    const RGB& texel(std::int64_t x, std::int64_t y) const;  // texel indices, wrapped here
+    // The texels a lookup blends: columns c0, c1 and rows r0, r1 (already wrapped) with weights fx, fy;
+    // with nearest filtering only (c0, r0).
+    struct Footprint {
+        int c0, c1, r0, r1;
+        float fx, fy;
+    };
+    bool footprint(Vec2 uv, Footprint& f) const;  // false for non-finite uv
 
     std::shared_ptr<const Image> m_image;
     ImageTextureOptions m_options;

@@ -19,9 +19,18 @@ class Texture {
 public:
     virtual ~Texture() = default;
     virtual RGB eval(const TextureLookup& lookup) const = 0;
+    /// The colour of a texture that is the same everywhere, or nullptr: lets a caller read a constant
+    /// once instead of calling eval at every hit.
+    virtual const RGB* constant() const { return nullptr; }
+    /// Whether alpha() carries information (an image file with an alpha channel); see opacity() in
+    /// rtlab/textures/texture_param.hpp for how materials use it.
+    virtual bool has_alpha() const { return false; }
+    /// Coverage in [0, 1] at the lookup (straight, not premultiplied); 1 for textures without alpha.
+    virtual float alpha(const TextureLookup&) const { return 1.0f; }
 };
 
-/// Nested textures travel inside Params as objects: params.set_object<Texture>("texture1", t).
+/// Nested textures travel inside Params as objects under the same key a constant colour would use:
+/// params.set_object<Texture>("color1", t); see rtlab/textures/texture_param.hpp.
 using TextureRegistry = Registry<Texture>;
 
 /// Registers every built-in texture by name: solid, checker, checker3d, mandelbrot, perlin, simplex,
