@@ -3,29 +3,28 @@
 #include <rtlab/core/color.hpp>
 #include <rtlab/core/ray.hpp>
 #include <rtlab/core/sample_hash.hpp>
+#include <rtlab/shading/whitted.hpp>
 
 #include <cstdint>
 #include <functional>
 
 namespace rtlab {
 
-/// \brief Rays traced, by kind. Plain integers, filled per tile and added up, so the totals never
-/// depend on the thread count or on the order in which tiles finish.
-struct RayCounters {
+/// \brief Rays traced, by kind: shading's RayStats (shadow, reflected, refracted) plus the camera rays, so
+/// a Whitted integrator counts straight into the renderer's counters. Plain integers, filled per tile and
+/// added up, so the totals never depend on the thread count or on the order in which tiles finish.
+struct RayCounters : RayStats {
     std::uint64_t camera = 0;
-    std::uint64_t shadow = 0;
-    std::uint64_t reflected = 0;
-    std::uint64_t refracted = 0;
 
     std::uint64_t total() const { return camera + shadow + reflected + refracted; }
     RayCounters& operator+=(const RayCounters& o) {
+        RayStats::operator+=(o);
         camera += o.camera;
-        shadow += o.shadow;
-        reflected += o.reflected;
-        refracted += o.refracted;
         return *this;
     }
-    friend bool operator==(const RayCounters&, const RayCounters&) = default;
+    friend bool operator==(const RayCounters& a, const RayCounters& b) {
+        return a.camera == b.camera && a.shadow == b.shadow && a.reflected == b.reflected && a.refracted == b.refracted;
+    }
 };
 
 /// \brief The radiance computation the renderer calls for every camera ray (a Whitted integrator, or an

@@ -1,0 +1,78 @@
+#pragma once
+/// \brief The renderer's scene: objects with materials, answering shading's SceneQuery.
+#include <rtlab/core/aabb.hpp>
+#include <rtlab/geometry/shape.hpp>
+#include <rtlab/shading/material.hpp>
+#include <rtlab/shading/scene_query.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace rtlab {
+
+/// Objects from which a scene level is a kd-tree over shapes rather than a plain list. The break-even
+/// measured by bench/render/scene_bench.cpp, recorded in docs/data/scene_breakeven.csv.
+inline constexpr std::size_t kSceneTreeThreshold = 8;
+
+/// \brief One object of a scene: a shape (analytic, a MeshShape, or an Instance of one) and its material.
+struct SceneObject {
+    std::shared_ptr<const Shape> shape;
+    std::shared_ptr<const Material> material;
+    SurfaceFlags flags;
+    std::string name;  ///< for error messages and statistics; may be empty
+};
+
+/// \brief How a Scene builds its structures.
+struct SceneOptions {
+    /// A query structure over this many objects or more is a kd-tree, fewer a plain list. 0 or 1: always a
+    /// tree; SIZE_MAX: always a list.
+    std::size_t tree_threshold = kSceneTreeThreshold;
+};
+
+/// \brief The objects of a render and the structures that answer the Whitted recursion's queries.
+///
+/// Three sets, each a plain list or a kd-tree over shapes by its own size: every object (intersect), the
+/// opaque shadow casters (occluded: any-hit), the transmissive shadow casters (material->transmits_shadows();
+/// intersect_transmissive). Objects with flags.casts_shadows false are in neither shadow set. Shapes are used
+/// as they are: analytic shapes stay analytic, a MeshShape carries its own tree, and Instances of one
+/// MeshShape share it. A hit's shape is the object's own (outermost) shape, so instances of one mesh can
+/// carry different materials. Immutable after construction and safe to query from several threads.
+class Scene final : public SceneQuery {
+public:
+    /// Throws rtlab::Error for an object without a shape or a material, or a shape given to two objects
+    /// (show one shape twice through Instances).
+    explicit Scene(std::vector<SceneObject> objects, SceneOptions options = {});
+    ~Scene() override;
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+
+    bool intersect(const Ray& ray, SurfaceHit& hit) const override;
+    bool occluded(const Ray& ray) const override;
+    bool intersect_transmissive(const Ray& ray, SurfaceHit& hit) const override;
+    /// Throws rtlab::Error for a hit on a shape that is not one of the scene's objects.
+    SurfaceInfo surface(const SurfaceHit& hit) const override;
+
+    /// What answers intersect(): "list" or "kd-tree", for the statistics.
+    std::string_view structure() const;
+    std::size_t object_count() const { return m_objects.size(); }
+    const std::vector<SceneObject>& objects() const { return m_objects; }
+    /// The union of every object's bounds (empty for an empty scene).
+    AABB bounds() const { return m_bounds; }
+    /// Heap bytes of the scene-level structures (lists, trees, the shape-to-object index), not of the shapes.
+    std::size_t structure_bytes() const;
+
+    class Set;  // a list or a kd-tree over some of the objects (scene.cpp)
+
+private:
+    std::vector<SceneObject> m_objects;
+    std::vector<std::pair<const Shape*, std::size_t>> m_index;  // sorted by shape, for surface()
+    AABB m_bounds;
+    std::unique_ptr<Set> m_all, m_opaque, m_transmissive;
+    bool m_opaque_is_all = false;  // every object is an opaque caster: occluded() uses m_all
+};
+
+}  // namespace rtlab
