@@ -14,9 +14,11 @@
 
 namespace rtlab {
 
-/// Objects from which a scene level is a kd-tree over shapes rather than a plain list. The break-even
-/// measured by bench/render/scene_bench.cpp, recorded in docs/data/scene_breakeven.csv.
-inline constexpr std::size_t kSceneTreeThreshold = 8;
+/// Objects from which a scene level is a kd-tree over shapes rather than a plain list: the smallest count
+/// at which the tree was no slower than the list for both closest hits and shadow rays in
+/// docs/data/scene_breakeven.csv (bench/render/scene_bench.cpp, random spheres; medians of 7 interleaved
+/// repetitions). Below it the list wins by up to 1.6x, above it the tree by up to 4.7x.
+inline constexpr std::size_t kSceneTreeThreshold = 24;
 
 /// \brief One object of a scene: a shape (analytic, a MeshShape, or an Instance of one) and its material.
 struct SceneObject {
