@@ -1,6 +1,7 @@
 // rtlab-accel: builds acceleration structures over a mesh and reports build time, size, closest-hit and
 // any-hit throughput, and mismatches against a reference (DESIGN.md, FORMATS.md).
 #include <rtlab/accel/accelerator.hpp>
+#include <rtlab/accel/hit_agreement.hpp>
 #include <rtlab/accel/kd_tree.hpp>
 #include <rtlab/accel/ray_io.hpp>
 #include <rtlab/core/error.hpp>
@@ -77,13 +78,6 @@ struct Traced {
     std::vector<unsigned char> blocked;
     std::vector<double> closest_s, any_s;  // one per timed round
 };
-
-bool mismatch(const MeshHit& a, bool hit_a, const MeshHit& b, bool hit_b) {
-    if (hit_a != hit_b) return true;
-    if (!hit_a) return false;
-    const float scale = std::max(std::abs(a.t), std::abs(b.t));
-    return std::abs(a.t - b.t) > 1e-4f * std::max(scale, 1e-30f);  // a different primitive at the same t is no mismatch
-}
 
 std::vector<std::size_t> even_sample(std::size_t n, std::size_t count) {
     std::vector<std::size_t> s;
@@ -259,7 +253,7 @@ int main(int argc, char** argv) {
                     mismatches = 0;
                     for (std::size_t k = 0; k < ref.sample.size(); ++k) {
                         const std::size_t i = method == "brute" ? k : ref.sample[k];
-                        mismatches += mismatch(t.hits[i], t.hits[i].hit(), ref.hits[k], ref.hit[k] != 0);
+                        mismatches += !same_hit(t.hits[i].hit(), t.hits[i], ref.hit[k] != 0, ref.hits[k]);
                     }
                 }
                 const std::size_t count = t.rays->size();
