@@ -6,23 +6,27 @@
 namespace rtlab {
 
 Box::Box(const AABB& box) : m_box(box) {
-    if (box.is_empty() || !is_finite(box.lo) || !is_finite(box.hi)) throw Error("box: bounds must be finite and non-empty");
+    if (box.is_empty() || !is_finite(box.lo) || !is_finite(box.hi))
+        throw Error("box: bounds must be finite and non-empty");
 }
 
 bool Box::hit_t(const Ray& ray, float& t) const {
     const auto range = m_box.intersect(Ray{ray.origin, ray.direction, -kInfinity, kInfinity});
     if (!range) return false;
     // The entry point, or the exit point for a ray starting inside.
-    if (range->min > ray.tmin && range->min < ray.tmax) t = range->min;
-    else if (range->max > ray.tmin && range->max < ray.tmax) t = range->max;
-    else return false;
+    if (range->min > ray.tmin && range->min < ray.tmax)
+        t = range->min;
+    else if (range->max > ray.tmin && range->max < ray.tmax)
+        t = range->max;
+    else
+        return false;
     return true;
 }
 
 bool Box::intersect(const Ray& ray, SurfaceHit& hit) const {
     float t;
     if (!hit_t(ray, t)) return false;
-    const Point3 p = ray.at(t);
+    Point3 p = ray.at(t);
     // The face is the axis where the point is relatively closest to a slab plane.
     int axis = 0;
     float best = kInfinity;
@@ -36,11 +40,16 @@ bool Box::intersect(const Ray& ray, SurfaceHit& hit) const {
     }
     Normal3 n(0.0f);
     n[axis] = upper ? 1.0f : -1.0f;
+    // Snapped onto the face (its plane and its rectangle): the point is then exactly on the box, so its
+    // error bound is zero and a spawned ray is offset by one float step.
+    p = glm::clamp(p, m_box.lo, m_box.hi);
+    p[axis] = upper ? m_box.hi[axis] : m_box.lo[axis];
     const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-    const Vec2 uv(ext[a1] > 0.0f ? (p[a1] - m_box.lo[a1]) / ext[a1] : 0.0f, ext[a2] > 0.0f ? (p[a2] - m_box.lo[a2]) / ext[a2] : 0.0f);
+    const Vec2 uv(ext[a1] > 0.0f ? (p[a1] - m_box.lo[a1]) / ext[a1] : 0.0f,
+                  ext[a2] > 0.0f ? (p[a2] - m_box.lo[a2]) / ext[a2] : 0.0f);
     Vec3 tangent(0.0f);
     tangent[a1] = 1.0f;
-    geometry::fill_hit(hit, ray, t, p, n, uv, tangent, 0, this);
+    geometry::fill_hit(hit, ray, t, p, Vec3(0.0f), n, uv, tangent, 0, this);
     return true;
 }
 

@@ -59,18 +59,29 @@ bool Cylinder::nearest(const Ray& ray, Candidate& best) const {
 bool Cylinder::intersect(const Ray& ray, SurfaceHit& hit) const {
     Candidate c;
     if (!nearest(ray, c)) return false;
-    const Point3 p = ray.at(c.t);
-    const Vec3 local = m_frame.to_local(p - m_base);
+    // The point in the cylinder's frame, put back on the surface: the side's (x, y) scaled to the radius
+    // (Pharr et al.: gamma(3) |x|, |y|), a cap's z set to its plane exactly; then back to the world.
+    Vec3 local = m_frame.to_local(ray.origin - m_base) + c.t * m_frame.to_local(ray.direction);
+    Vec3 local_error(0.0f);
+    const float radial = glm::length(Vec2(local.x, local.y));
+    if (c.part == 0) {
+        if (radial > 0.0f && std::isfinite(radial)) local.x *= m_radius / radial, local.y *= m_radius / radial;
+        local.z = std::clamp(local.z, 0.0f, m_height);
+        local_error = gamma_bound(3) * Vec3(std::abs(local.x), std::abs(local.y), 0.0f);
+    } else {
+        local.z = c.part == 1 ? 0.0f : m_height;
+    }
+    const Point3 p = m_base + m_frame.to_world(local);
+    const Vec3 error = geometry::frame_point_error(p, m_frame, local, local_error);
     const float angle = std::atan2(local.y, local.x);
     const float u = (angle < 0.0f ? angle + 2.0f * kPi : angle) / (2.0f * kPi);
     if (c.part == 0) {
         const Normal3 n = glm::normalize(m_frame.to_world(Vec3(local.x, local.y, 0.0f)));
         const Vec3 tangent = m_frame.to_world(Vec3(-local.y, local.x, 0.0f));
-        geometry::fill_hit(hit, ray, c.t, p, n, {u, std::clamp(local.z / m_height, 0.0f, 1.0f)}, tangent, 0, this);
+        geometry::fill_hit(hit, ray, c.t, p, error, n, {u, local.z / m_height}, tangent, 0, this);
     } else {
         const Normal3 n = c.part == 1 ? -m_frame.n : m_frame.n;
-        const float r = glm::length(Vec2(local.x, local.y)) / m_radius;
-        geometry::fill_hit(hit, ray, c.t, p, n, {u, r}, m_frame.s, 0, this);
+        geometry::fill_hit(hit, ray, c.t, p, error, n, {u, radial / m_radius}, m_frame.s, 0, this);
     }
     return true;
 }

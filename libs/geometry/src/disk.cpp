@@ -30,12 +30,16 @@ bool Disk::hit_t(const Ray& ray, float& t) const {
 bool Disk::intersect(const Ray& ray, SurfaceHit& hit) const {
     float t;
     if (!hit_t(ray, t)) return false;
-    const Point3 p = ray.at(t);
+    // In the disk's frame with z set to the plane exactly, then back to the world.
     const Frame f = Frame::from_normal(m_normal);
-    const Vec3 local = f.to_local(p - m_centre);
+    Vec3 local = f.to_local(ray.origin - m_centre) + t * f.to_local(ray.direction);
+    local.z = 0.0f;
+    const Point3 p = m_centre + f.to_world(local);
+    const Vec3 error = geometry::frame_point_error(p, f, local, Vec3(0.0f));
     const float angle = std::atan2(local.y, local.x);
-    const Vec2 uv(glm::length(Vec2(local.x, local.y)) / m_radius, (angle < 0.0f ? angle + 2.0f * kPi : angle) / (2.0f * kPi));
-    geometry::fill_hit(hit, ray, t, p, m_normal, uv, f.s, 0, this);
+    const Vec2 uv(glm::length(Vec2(local.x, local.y)) / m_radius,
+                  (angle < 0.0f ? angle + 2.0f * kPi : angle) / (2.0f * kPi));
+    geometry::fill_hit(hit, ray, t, p, error, m_normal, uv, f.s, 0, this);
     return true;
 }
 

@@ -20,7 +20,10 @@ void fill_mesh_hit(const TriangleMesh& mesh, std::uint32_t index, const Ray& ray
         const float det = d1.x * d2.y - d1.y * d2.x;
         if (det != 0.0f) dpdu = (d2.y * (p1 - p0) - d1.y * (p2 - p0)) / det;
     }
-    geometry::fill_hit(hit, ray, t, w * p0 + u * p1 + v * p2, n, uv, dpdu, index, shape);
+    // Rebuilt from the barycentrics (Pharr et al.): gamma(7) sum |b_i p_i| bounds its distance from the plane.
+    const Point3 p = w * p0 + u * p1 + v * p2;
+    const Vec3 error = gamma_bound(7) * (glm::abs(w * p0) + glm::abs(u * p1) + glm::abs(v * p2));
+    geometry::fill_hit(hit, ray, t, p, error, n, uv, dpdu, index, shape);
     if (mesh.has_normals()) {
         const Normal3 s = w * mesh.normals[tri[0]] + u * mesh.normals[tri[1]] + v * mesh.normals[tri[2]];
         if (glm::dot(s, s) > 0.0f && is_finite(s)) {

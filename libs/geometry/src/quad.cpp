@@ -32,7 +32,11 @@ bool Quad::hit_params(const Ray& ray, float& t, float& alpha, float& beta) const
 bool Quad::intersect(const Ray& ray, SurfaceHit& hit) const {
     float t, alpha, beta;
     if (!hit_params(ray, t, alpha, beta)) return false;
-    geometry::fill_hit(hit, ray, t, ray.at(t), m_normal, {alpha, beta}, m_u, 0, this);
+    // Rebuilt from the parameters, so the point is on the quad's plane but for the rounding of these three
+    // terms (gamma(3)); two more for the plane the test uses, whose unit normal is rounded off the edges'.
+    const Point3 p = m_corner + alpha * m_u + beta * m_v;
+    const Vec3 error = gamma_bound(5) * (glm::abs(m_corner) + glm::abs(alpha * m_u) + glm::abs(beta * m_v));
+    geometry::fill_hit(hit, ray, t, p, error, m_normal, {alpha, beta}, m_u, 0, this);
     return true;
 }
 

@@ -25,21 +25,34 @@ bool Sphere::nearest_root(const Ray& ray, float& t) const {
     const float c = glm::dot(oc, oc) - m_radius * m_radius;
     float t0, t1;
     if (!geometry::stable_roots(a, b, c, disc, t0, t1)) return false;
-    if (t0 > ray.tmin && t0 < ray.tmax) t = t0;
-    else if (t1 > ray.tmin && t1 < ray.tmax) t = t1;
-    else return false;
+    if (t0 > ray.tmin && t0 < ray.tmax)
+        t = t0;
+    else if (t1 > ray.tmin && t1 < ray.tmax)
+        t = t1;
+    else
+        return false;
     return true;
 }
 
 bool Sphere::intersect(const Ray& ray, SurfaceHit& hit) const {
     float t;
     if (!nearest_root(ray, t)) return false;
-    const Point3 p = ray.at(t);
-    const Normal3 n = glm::normalize(p - m_centre);
+    // Relative to the centre, then projected back onto the sphere (Pharr et al., pbrt-v4): the projection
+    // removes the radial error of o + t d, which is what a spawned ray must clear, leaving gamma(5) |rel|.
+    Vec3 rel = (ray.origin - m_centre) + t * ray.direction;
+    const float len = glm::length(rel);
+    // A sphere below the float spacing at its centre can put the rounded point on the centre itself.
+    if (!(len > 0.0f) || !std::isfinite(len))
+        rel = -glm::normalize(ray.direction) * m_radius;
+    else
+        rel *= m_radius / len;
+    const Point3 p = m_centre + rel;
+    const Vec3 error = gamma_bound(5) * glm::abs(rel) + gamma_bound(1) * glm::abs(p);
+    const Normal3 n = glm::normalize(rel);
     const float phi = std::atan2(-n.z, n.x);  // eastwards from -x
     const float u = (phi + kPi) / (2.0f * kPi);
     const float v = 1.0f - std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi;
-    geometry::fill_hit(hit, ray, t, p, n, {u, v}, Vec3(n.z, 0.0f, -n.x), 0, this);
+    geometry::fill_hit(hit, ray, t, p, error, n, {u, v}, Vec3(n.z, 0.0f, -n.x), 0, this);
     return true;
 }
 

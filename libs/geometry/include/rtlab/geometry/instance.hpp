@@ -8,7 +8,8 @@ namespace rtlab {
 
 /// \brief object-to-world affine transform applied to a shared shape. Rays go to object space (t is
 /// unchanged because the direction is transformed, not normalised); normals come back by the inverse
-/// transpose, so non-uniform scales keep them perpendicular.
+/// transpose, so non-uniform scales keep them perpendicular. A hit reports the Instance as its shape, the
+/// inner point transformed (with its error bound carried through) and the inner object point.
 class Instance final : public Shape {
 public:
     /// Throws rtlab::Error for a singular or non-finite transform.
@@ -22,6 +23,10 @@ private:
     std::shared_ptr<const Shape> m_shape;
     Mat4 m_to_world, m_to_object;
     Mat3 m_normal_to_world;  // inverse transpose of the linear part
+    // For the error bound: absolute values of both transforms, and of the float inverse's residual
+    // (inverse * transform - identity), which moves every ray a spawned origin sends back to object space.
+    Mat3 m_abs_linear, m_abs_inverse_linear, m_abs_residual_linear;
+    Vec3 m_abs_translation, m_abs_inverse_translation, m_abs_residual_translation;
 };
 
 }  // namespace rtlab

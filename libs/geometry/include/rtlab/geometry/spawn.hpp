@@ -1,0 +1,35 @@
+#pragma once
+/// \brief Secondary rays leaving a surface hit: reflection, refraction, shadow and connection rays that never
+/// hit their own surface again and never skip a nearby one.
+///
+/// The origin is moved off the surface by the hit's own error bound (SurfaceHit::point_error) along the
+/// geometric normal, to the side the new ray leaves: never by a fixed epsilon, which is too small for a
+/// point far from the world's origin and too large for a small or nearby shape. The one routine shading,
+/// render and rtlab-accel share.
+#include <rtlab/core/ray.hpp>
+#include <rtlab/geometry/surface_hit.hpp>
+
+namespace rtlab {
+
+/// Shadow and connection rays end at t = 1 - kShadowEpsilon of their segment (pbrt-v4's ShadowEpsilon), so
+/// the target's own surface, or a light sample on it, does not block the ray that reaches it. Relative to
+/// the segment: an occluder within 1e-4 of the distance from the target is not seen.
+inline constexpr float kShadowEpsilon = 1e-4f;
+
+/// p moved off its surface by the error bound p_error projected on the unit geometric normal ng, to the
+/// side of the surface that dir leaves (ng's side when dot(dir, ng) >= 0), then each moved component one
+/// float step further (so a point with a zero bound still leaves the surface by one step).
+Point3 offset_ray_origin(const Point3& p, const Vec3& p_error, const Normal3& ng, const Vec3& dir);
+
+/// A ray leaving the hit along dir (not normalised): the origin offset towards dir's side, tmin 0, tmax inf.
+Ray spawn_ray(const SurfaceHit& hit, const Vec3& dir);
+
+/// A shadow ray from the hit to a point not on a surface (a point light): direction = target - origin,
+/// tmin 0, tmax 1 - kShadowEpsilon, so t in (0, 1) spans the segment.
+Ray spawn_ray_to(const SurfaceHit& hit, const Point3& target);
+
+/// A shadow or connection ray between two surface hits (a point and a light sample on an area light):
+/// both ends offset off their surfaces towards each other; direction = end - origin, tmax 1 - kShadowEpsilon.
+Ray spawn_ray_to(const SurfaceHit& from, const SurfaceHit& to);
+
+}  // namespace rtlab
