@@ -29,11 +29,23 @@ TriangleMesh load_and_describe_mesh(const std::string& path) {
     return mesh;
 }
 
+// Each method's answers to the spawned rays against the spawn file's promise (brute force: on the sample).
+void report_spawn_checks(const std::vector<Built>& built, const std::vector<Traced>& traced,
+                         const SpawnSources& sources, std::size_t sample_size) {
+    const std::vector<std::size_t> sample = even_sample(sources.triangles.size(), sample_size);
+    for (std::size_t m = 0; m < built.size(); ++m) {
+        const bool sampled = built[m].method == "brute";
+        print_spawn_check(built[m].method,
+                          check_spawned(sources, traced[m].hits, sampled ? sample : std::vector<std::size_t>{}),
+                          sampled);
+    }
+}
+
 void run(Options& o) {
     const BuildOptions build = build_options(o);
     complete_options(o);
     const TriangleMesh mesh = load_and_describe_mesh(o.mesh_path);
-    const std::vector<RaySet> sets = make_ray_sets(o, mesh.bounds());
+    const std::vector<RaySet> sets = make_ray_sets(o, mesh);
 
     tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
     const int threads = arena.max_concurrency();
@@ -59,6 +71,7 @@ void run(Options& o) {
                 hits_written = true;
             }
         }
+        if (sets[s].spawned) report_spawn_checks(built, traced, *sets[s].spawned, o.sample_size);
     }
     print_footer(o.runs, threads);
 }

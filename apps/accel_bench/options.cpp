@@ -1,6 +1,7 @@
 #include "options.hpp"
 
 #include <rtlab/accel/kd_tree.hpp>
+#include <rtlab/core/error.hpp>
 
 #include <fmt/format.h>
 
@@ -14,6 +15,10 @@ void add_options(CLI::App& app, Options& o) {
                    fmt::format("{} (repeatable; default: kd-sah, kd-sah-binned, bvh and embree)",
                                fmt::join(accelerator_methods(), ", ")));
     app.add_option("--rays", o.ray_specs, "primary, random or a ray file (repeatable; default: primary and random)");
+    app.add_option("--spawn", o.spawn_path,
+                   "spawn file (RTSPAWN1) of the one --rays file: trace instead the rays that the library's offset "
+                   "routine spawns from each ray's surface; reports outward rays that hit their own triangle again "
+                   "and inward rays that miss");
     app.add_option("--threads", o.threads, "threads for building and tracing (default: all)")
         ->check(CLI::NonNegativeNumber);
     app.add_option("--runs", o.runs, "timed builds and tracing rounds per method (median; default 5)")
@@ -49,6 +54,9 @@ void complete_options(Options& o) {
         if (std::find(known.begin(), known.end(), m) == known.end())
             make_accelerator(m, TriangleMesh{});  // throws the listing
     if (o.ray_specs.empty()) o.ray_specs = {"primary", "random"};
+    const bool one_file = o.ray_specs.size() == 1 && o.ray_specs[0] != "primary" && o.ray_specs[0] != "random";
+    if (!o.spawn_path.empty() && !one_file)
+        throw Error("--spawn " + o.spawn_path + " needs exactly one --rays FILE: the rays whose triangles it lists");
 }
 
 }  // namespace rtlab::accel_app

@@ -14,6 +14,7 @@ struct Options {
     std::string mesh_path;
     std::vector<std::string> methods;
     std::vector<std::string> ray_specs;  // "primary", "random" or a ray file
+    std::string spawn_path;              // with one ray file: the triangle each ray starts on
     int threads = 0, runs = 5, primary_size = 1024, leaf_width = 0;
     std::size_t random_count = 1000000, sample_size = 2000;
     std::string hits_out, csv_path, triangle = "watertight";
@@ -25,7 +26,7 @@ void add_options(CLI::App& app, Options& options);
 BuildOptions build_options(const Options& options);
 
 /// Fills in the default methods and ray sets; throws rtlab::Error listing the known methods for an unknown
-/// one.
+/// one, and for --spawn without exactly one ray file.
 void complete_options(Options& options);
 
 }  // namespace rtlab::accel_app

@@ -41,6 +41,11 @@ void print_footer(int runs, int threads) {
         runs, threads);
 }
 
+void print_spawn_check(const std::string& method, const SpawnCheck& c, bool sampled) {
+    fmt::print("spawned rays{}, {}: {} outward, {} hit their own triangle again; {} inward, {} missed\n",
+               sampled ? " (sample)" : "", method, c.outward, c.outward_self_hits, c.inward, c.inward_misses);
+}
+
 Report::Report(const std::string& csv_path, RunInfo info) : m_info(std::move(info)) {
     if (!csv_path.empty()) {
         m_csv.emplace(fmt::output_file(csv_path));

@@ -1,6 +1,7 @@
 #pragma once
 // rtlab-accel's printed table and its CSV file (columns as FORMATS.md lists them, then its own).
 #include "scoring.hpp"
+#include "spawned_rays.hpp"
 
 #include <fmt/os.h>
 
@@ -19,6 +20,8 @@ struct RunInfo {
 
 void print_reference_line(const TriangleAccelerator* reference, std::size_t sample_size);
 void print_footer(int runs, int threads);
+/// One method's SpawnCheck (`sampled`: on the reference sample only).
+void print_spawn_check(const std::string& method, const SpawnCheck& check, bool sampled);
 
 /// \brief The table on stdout and, when a path is given, the CSV file: both headers on construction, then
 /// one row per (method, ray set).
