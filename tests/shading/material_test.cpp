@@ -1,8 +1,12 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/shading/brdf.hpp>
 #include <rtlab/shading/material.hpp>
+#include <rtlab/textures/image_texture.hpp>
+#include <rtlab/textures/texture_param.hpp>
 
 #include <catch2/catch.hpp>
+
+#include "shared_data.hpp"
 
 #include <cmath>
 #include <memory>
@@ -30,6 +34,19 @@ private:
 class UvTexture final : public Texture {
 public:
     RGB eval(const TextureLookup& q) const override { return {q.uv.x, q.uv.y, q.point.z}; }
+};
+
+// A texture with an alpha channel whose colour and alpha disagree, as an RGBA image's may.
+class AlphaTexture final : public Texture {
+public:
+    AlphaTexture(const RGB& c, float a) : m_c(c), m_a(a) {}
+    RGB eval(const TextureLookup&) const override { return m_c; }
+    bool has_alpha() const override { return true; }
+    float alpha(const TextureLookup&) const override { return m_a; }
+
+private:
+    RGB m_c;
+    float m_a;
 };
 
 std::string error_of(const std::string& name, Params p) {
@@ -150,7 +167,7 @@ TEST_CASE("every colour parameter takes a constant or a texture under one key", 
         if (std::string(key) == "albedo") CHECK(t.diffuse == RGB(0.25f, 0.75f, 0.5f));
         if (std::string(key) == "kr") CHECK(t.kr == RGB(0.25f, 0.75f, 0.5f));
         if (std::string(key) == "emission") CHECK(t.emission == RGB(0.25f, 0.75f, 0.5f));
-        if (std::string(key) == "opacity") CHECK(t.opacity == 0.75f);  // the texture's alpha
+        if (std::string(key) == "opacity") CHECK(t.opacity == 0.5f);  // no alpha: the channel mean
     }
     for (const char* key : {"kd", "ks", "exponent"}) {
         INFO(key);
@@ -159,7 +176,7 @@ TEST_CASE("every colour parameter takes a constant or a texture under one key", 
         const SurfaceTerms t = make("phong", p)->terms(q);
         if (std::string(key) == "kd") CHECK(t.diffuse == RGB(0.25f, 0.75f, 0.5f));
         if (std::string(key) == "ks") CHECK(t.specular == RGB(0.25f, 0.75f, 0.5f));
-        if (std::string(key) == "exponent") CHECK(t.shape_u == 0.75f);
+        if (std::string(key) == "exponent") CHECK(t.shape_u == 0.5f);  // a scalar is the channel mean
     }
 }
 
@@ -176,6 +193,56 @@ TEST_CASE("shadow transmittance is 1 - opacity + opacity kt and flags the materi
     cut.set_object<Texture>("opacity", std::make_shared<FixedTexture>(RGB(1.0f)));
     CHECK(make("lambert", cut)->transmits_shadows());  // a texture may cut holes anywhere
     CHECK(make("lambert", cut)->shadow_transmittance({}).is_black());
+}
+
+TEST_CASE("opacity is a texture's alpha when it has one, else its channel mean", "[material]") {
+    // Colour 0.9, alpha 0.2: a rule that read the colour would give 0.9 (mean) or 0.9 (any channel).
+    Params p;
+    p.set_object<Texture>("opacity", std::make_shared<AlphaTexture>(RGB(0.9f), 0.2f));
+    const auto m = make("lambert", p);
+    CHECK(m->terms({}).opacity == 0.2f);
+    CHECK(m->shadow_transmittance({}).g == Approx(0.8f));
+    // Without alpha, the mean of the channels: 0.1, 0.2, 0.6 give 0.3, not the green 0.2.
+    Params q;
+    q.set_object<Texture>("opacity", std::make_shared<FixedTexture>(RGB(0.1f, 0.2f, 0.6f)));
+    CHECK(make("lambert", q)->terms({}).opacity == Approx(0.3f));
+    // A constant list is read by the same rule, and checked in [0, 1] by it.
+    Params c;
+    c.set("opacity", Params::List{0.1, 0.2, 0.6});
+    CHECK(make("lambert", c)->terms({}).opacity == Approx(0.3f));
+    CHECK(make("lambert", c)->transmits_shadows());
+    Params bad;
+    bad.set("opacity", Params::List{1.0, 1.0, 1.6});
+    CHECK(error_of("lambert", bad).find("'opacity'") != std::string::npos);
+}
+
+TEST_CASE("an RGBA PNG is both the colour and the cut-out of Saturn's rings", "[material]") {
+    const auto shared = test::shared_dir();
+    if (!shared) {
+        WARN("../shared not found: skipped");
+        return;
+    }
+    // saturn_ring.png: a radial strip, alpha 0 for the innermost ~5% (x < 108 of 2048), ~0.9 across the B ring.
+    const auto ring = ImageTexture::load(*shared / "textures" / "saturn_ring.png", {.wrap = WrapMode::clamp});
+    REQUIRE(ring->has_alpha());
+    Params p;
+    p.set_object<Texture>("albedo", ring).set_object<Texture>("opacity", ring);
+    const auto m = make("lambert", p);
+    CHECK(m->transmits_shadows());
+    int holes = 0, solid = 0, wrong = 0;
+    for (int x = 0; x < 2048; ++x) {
+        TextureLookup q;
+        q.uv = {(static_cast<float>(x) + 0.5f) / 2048.0f, 0.5f};
+        const SurfaceTerms t = m->terms(q);
+        const float a = ring->alpha(q);
+        if (t.opacity != a || t.diffuse != ring->eval(q)) ++wrong;
+        if (m->shadow_transmittance(q).g != Approx(1.0f - a).margin(1e-6)) ++wrong;
+        if (x < 100 && t.opacity == 0.0f && m->shadow_transmittance(q) == RGB(1.0f)) ++holes;
+        if (a > 0.8f) ++solid;
+    }
+    CHECK(wrong == 0);
+    CHECK(holes == 100);  // the gap inside the rings lets everything through
+    CHECK(solid > 200);   // and the B ring very little
 }
 
 TEST_CASE("classic and physical conventions differ exactly as defined", "[material]") {

@@ -1,7 +1,7 @@
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>
 
-#include "shading_params.hpp"
+#include "builtin_params.hpp"
 
 namespace rtlab {
 
