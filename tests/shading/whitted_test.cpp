@@ -462,6 +462,75 @@ TEST_CASE("smooth normals never send reflected or refracted rays to the wrong si
     CHECK(wrong == 0);
 }
 
+TEST_CASE("smooth normals never refract into or out of a mesh on the wrong side of the true surface", "[whitted]") {
+    // The coarse smooth icosphere in clear glass (kt 1, no kr, no Fresnel), one refraction deep, in the
+    // direction environment; its vertex normals lean up to 37 degrees off the facets'.
+    // Entering: the ray must go into the mesh, meet the far wall at the depth limit and be black; one left
+    // outside would escape and show the environment. (With n_s . n_g > 0 an entering refraction cannot
+    // rise above the facet: it is d eta + k n_s with k < 0; the leaks are on the way out.)
+    // Leaving, at index 1.05 (critical angle 72 degrees), from eyes inside: where the shading normal lets
+    // the ray out, it must leave above the facet it hits and show the environment in a direction outside
+    // it; total internal reflection stays inside and is black. The test counts the rays whose uncorrected
+    // direction, refract(d, n_s, 1.05), points back into the mesh, so it is known to exercise the correction.
+    auto mesh = std::make_shared<TriangleMesh>(test::icosphere(0));
+    mesh->normals = mesh->positions;
+    WhittedOptions o;
+    o.environment = std::make_shared<DirectionTexture>();
+    o.max_depth = 1;
+    auto glass = [&](double ior, ShapeList& scene) {
+        Params clear;
+        clear.set("kr", 0.0).set("kt", 1.0).set("fresnel", false).set("ior", ior);
+        scene.add(std::make_shared<MeshShape>(mesh), material("glass", clear));
+    };
+
+    ShapeList dense;
+    glass(1.5, dense);
+    const WhittedIntegrator wd(dense, {}, o);
+    int entering = 0, entering_wrong = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Point3 eye = 4.0f * spiral(i, 4000);
+        const Vec3 d = glm::normalize(spiral((i * 61) % 4000, 4000) * 0.8f - eye);
+        SurfaceHit h;
+        if (!dense.intersect(Ray{eye, d}, h)) continue;
+        ++entering;
+        RayStats stats;
+        if (!wd.radiance(Ray{eye, d}, {}, stats).is_black()) ++entering_wrong;
+    }
+    CHECK(entering > 1000);
+    CHECK(entering_wrong == 0);
+
+    ShapeList thin;
+    glass(1.05, thin);
+    const WhittedIntegrator wt(thin, {}, o);
+    int leaving = 0, leaving_wrong = 0, would_leak = 0, tir = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Point3 eye = 0.78f * spiral((i * 17) % 4000, 4000);
+        const Vec3 d = glm::normalize(spiral(i, 4000));
+        SurfaceHit h;
+        REQUIRE(thin.intersect(Ray{eye, d}, h));
+        ++leaving;
+        // The integrator turns the normals towards the viewer (inwards here) and refracts with 1.05 / 1.
+        Normal3 ns = -h.shading_normal;
+        if (!(glm::dot(ns, -d) > 0.0f)) ns = -h.geometric_normal;
+        const auto t = refract(d, ns, 1.05f);
+        RayStats stats;
+        const RGB L = wt.radiance(Ray{eye, d}, {}, stats);
+        if (!t) {
+            ++tir;
+            if (!L.is_black()) ++leaving_wrong;  // reflected inside: meets the wall at the depth limit
+            continue;
+        }
+        if (glm::dot(*t, h.geometric_normal) <= 0.0f) ++would_leak;
+        const Vec3 r(2.0f * L.r - 1.0f, 2.0f * L.g - 1.0f, 2.0f * L.b - 1.0f);
+        if (L.is_black() || glm::dot(r, h.geometric_normal) <= 0.0f) ++leaving_wrong;
+    }
+    INFO("entering " << entering << ", leaving " << leaving << " (uncorrected back inside " << would_leak
+                     << ", total internal reflection " << tir << ")");
+    CHECK(would_leak > 20);
+    CHECK(tir > 20);
+    CHECK(leaving_wrong == 0);
+}
+
 TEST_CASE("area light samples are a pure function of the sample key", "[whitted]") {
     Params area;
     area.set("corner", Params::List{-1, 3, -1}).set("edge_u", Params::List{2, 0, 0});
