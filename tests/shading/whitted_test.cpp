@@ -567,3 +567,70 @@ TEST_CASE("escaping rays see the cube map in their direction, through a mirror t
     CHECK(w.radiance(Ray{Point3(0.0f), Vec3(0, 0, -1)}, {}, s).g == Approx(0.5f));
     CHECK(s.reflected == 1);
 }
+
+TEST_CASE("a cook-torrance floor under a hand-placed light gives the BRDF times cos times I over r^2", "[whitted]") {
+    // Floor y = 0 seen at the origin from (0, 1, -3); a point light of intensity 7 at (1.2, 2, 0.5). Physical:
+    // f(wo, wi) cos(theta_i) 7 / r^2 in any local frame with n = +y (the lobe is isotropic).
+    const Point3 light_at(1.2f, 2.0f, 0.5f), eye(0.0f, 1.0f, -3.0f);
+    for (const char* metal : {"gold", "none"}) {
+        Params p;
+        p.set("kd", 0.2).set("roughness", 0.5);
+        if (std::string(metal) != "none") p.set("metal", std::string(metal));
+        ShapeList scene;
+        scene.add(quad(Point3(-5, 0, -5), Vec3(0, 0, 10), Vec3(10, 0, 0)), material("cook-torrance", p));
+        for (Convention c : {Convention::physical, Convention::classic}) {
+            WhittedOptions o;
+            o.convention = c;
+            const WhittedIntegrator w(scene, {point_light(light_at, 7.0f)}, o);
+            RayStats s;
+            const RGB L = w.radiance(Ray{eye, Point3(0.0f) - eye}, {}, s);
+            const Frame f = Frame::from_normal(Normal3(0, 1, 0));
+            const Vec3 wo = f.to_local(glm::normalize(eye)), wi = f.to_local(glm::normalize(light_at));
+            const Fresnel fresnel =
+                std::string(metal) == "gold" ? Fresnel::conductor(kGold) : Fresnel::dielectric(1.5f);
+            const CookTorranceBrdf brdf(RGB(0.2f), RGB(1.0f),
+                                        MicrofacetDistribution::from_roughness(MicrofacetModel::ggx, 0.5f), fresnel);
+            const float r2 = glm::dot(light_at, light_at);
+            const RGB expected = c == Convention::physical ? brdf.eval(wo, wi) * wi.z * (7.0f / r2)
+                                                           : brdf.eval(wo, wi) * wi.z * kPi * 7.0f;
+            INFO(metal << (c == Convention::physical ? " physical" : " classic"));
+            CHECK(L.r == Approx(expected.r).epsilon(1e-5));
+            CHECK(L.g == Approx(expected.g).epsilon(1e-5));
+            CHECK(L.b == Approx(expected.b).epsilon(1e-5));
+            CHECK(s.shadow == 1);
+        }
+    }
+}
+
+TEST_CASE("an ashikhmin-shirley highlight is elongated along the surface tangent and turns with it", "[whitted]") {
+    // A floor seen from above with the light at the eye: at a floor point offset by x the half vector
+    // tilts towards x. nu = 10 along the tangent, nv = 2000 across: the highlight stretches along the
+    // tangent. Two floors, tangent (edge_u) along x and along z: the long axis follows.
+    Params p;
+    p.set("rd", 0.0).set("rs", 0.5).set("nu", 10.0).set("nv", 2000.0);
+    const auto m = material("ashikhmin-shirley", p);
+    const Point3 eye(0.0f, 2.0f, 0.0f);
+    auto extent = [&](const Point3& corner, const Vec3& edge_u, const Vec3& edge_v, const Vec3& along) {
+        ShapeList scene;
+        scene.add(quad(corner, edge_u, edge_v), m);
+        const WhittedIntegrator w(scene, {point_light(eye, 4.0f)});
+        RayStats s;
+        const float peak = w.radiance(Ray{eye, Vec3(0, -1, 0)}, {}, s).g;
+        int above_half = 0;
+        for (int i = -200; i <= 200; ++i) {
+            const Point3 target = (static_cast<float>(i) / 100.0f) * along;
+            above_half += w.radiance(Ray{eye, target - eye}, {}, s).g > 0.5f * peak;
+        }
+        return above_half;
+    };
+    // edge_u x edge_v faces up (+y) in both: x cross -z and z cross x.
+    const Vec3 x(10, 0, 0), z(0, 0, 10), ax(1, 0, 0), az(0, 0, 1);
+    const int tx_along_x = extent(Point3(-5, 0, 5), x, -z, ax), tx_along_z = extent(Point3(-5, 0, 5), x, -z, az);
+    const int tz_along_x = extent(Point3(-5, 0, -5), z, x, ax), tz_along_z = extent(Point3(-5, 0, -5), z, x, az);
+    INFO("tangent x: " << tx_along_x << " along x, " << tx_along_z << " along z; tangent z: " << tz_along_x
+                       << " along x, " << tz_along_z << " along z");
+    CHECK(tx_along_z >= 1);
+    CHECK(tx_along_x > 5 * tx_along_z);
+    CHECK(tz_along_z > 5 * tz_along_x);
+    CHECK(std::abs(tx_along_x - tz_along_z) <= 2);
+}

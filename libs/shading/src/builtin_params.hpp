@@ -74,6 +74,8 @@ extern const char* const kWhittedDoc;
 void register_lambert(MaterialRegistry& registry);
 void register_phong(MaterialRegistry& registry);
 void register_blinn_phong(MaterialRegistry& registry);
+void register_cook_torrance(MaterialRegistry& registry);
+void register_ashikhmin_shirley(MaterialRegistry& registry);
 void register_mirror(MaterialRegistry& registry);
 void register_glass(MaterialRegistry& registry);
 

@@ -9,6 +9,8 @@ void register_builtins(MaterialRegistry& registry) {
     shading_detail::register_lambert(registry);
     shading_detail::register_phong(registry);
     shading_detail::register_blinn_phong(registry);
+    shading_detail::register_cook_torrance(registry);
+    shading_detail::register_ashikhmin_shirley(registry);
     shading_detail::register_mirror(registry);
     shading_detail::register_glass(registry);
 }

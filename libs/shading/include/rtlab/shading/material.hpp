@@ -92,7 +92,7 @@ private:
 
 using MaterialRegistry = Registry<Material>;
 
-/// Registers lambert, phong, blinn-phong, mirror and glass. Each doc() lists the
+/// Registers lambert, phong, blinn-phong, cook-torrance, ashikhmin-shirley, mirror and glass. Each doc() lists the
 /// parameters; the Whitted parameters (kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption) are accepted
 /// by all.
 void register_builtins(MaterialRegistry& registry);
