@@ -1,0 +1,39 @@
+#pragma once
+/// \brief Light sources, created by name through a Registry: point, directional, spot, area, ambient.
+#include <rtlab/core/color.hpp>
+#include <rtlab/core/math.hpp>
+#include <rtlab/core/registry.hpp>
+#include <rtlab/shading/material.hpp>
+
+namespace rtlab {
+
+/// \brief One sample of a light as seen from a point.
+struct LightSample {
+    Vec3 wi{0.0f, 0.0f, 1.0f};  ///< unit direction from the point towards the light
+    Point3 position{0.0f};      ///< the sampled point on the light (shadow rays stop just short of it)
+    bool at_infinity = false;   ///< directional: no position, shadow rays are unbounded
+    RGB arriving;               ///< what multiplies Material::direct (already divided by the sample count)
+};
+
+/// \brief A light. sample() is const and thread-safe; its random numbers come from the caller.
+class Light {
+public:
+    virtual ~Light() = default;
+    /// Samples the light wants per shaded point (n x n for an area light, 1 for the others, 0 for ambient).
+    virtual int sample_count() const { return 1; }
+    /// Sample `index` of sample_count() seen from `point`; u is uniform in [0, 1)^2 (used by area lights).
+    /// arriving is black where the light gives nothing (outside a spot's cone, behind an area light).
+    virtual LightSample sample(const Point3& point, int index, Vec2 u, Convention convention) const = 0;
+    /// Light arriving equally from every direction (ambient light), black for the others.
+    virtual RGB ambient() const { return {}; }
+};
+
+using LightRegistry = Registry<Light>;
+
+/// Registers point, directional, spot, area and ambient; each doc() lists the parameters.
+void register_builtins(LightRegistry& registry);
+
+/// A registry with category "light" and every built-in registered.
+LightRegistry make_light_registry();
+
+}  // namespace rtlab

@@ -1,0 +1,103 @@
+#pragma once
+/// \brief Materials: a local reflection model plus the Whitted terms, created by name through a Registry.
+#include <rtlab/core/color.hpp>
+#include <rtlab/core/math.hpp>
+#include <rtlab/core/registry.hpp>
+#include <rtlab/textures/texture.hpp>
+
+#include <memory>
+
+namespace rtlab {
+
+/// \brief How light is measured and reflected: a scene picks one.
+///
+/// physical: BRDFs are normalised (Lambert albedo / pi), a point light of intensity I gives I / r^2.
+/// classic:  the course's convention: Phong is kd (n.l) + ks (r.v)^e without pi, lights do not fall off
+///           with distance, and an ambient light adds kd * ambient. Models that only exist physically based
+///           (cook-torrance, ashikhmin-shirley) are scaled by pi, so their diffuse part matches kd (n.l).
+enum class Convention { physical, classic };
+
+/// \brief A material's values at one hit, its textures looked up once (per hit, not per light sample).
+///
+/// diffuse, specular and the two shape numbers mean what each model documents (Phong: kd, ks, exponent;
+/// cook-torrance: kd, ks, roughness; ashikhmin-shirley: rd, rs, nu, nv). kr and kt are already limited as
+/// the material documents (kr + kt <= 1 without Fresnel weighting, each <= 1 with it).
+struct SurfaceTerms {
+    RGB diffuse, specular;
+    float shape_u = 0.0f, shape_v = 0.0f;
+    RGB kr, kt;
+    RGB emission;
+    float opacity = 1.0f;
+};
+
+/// \brief A surface's response to light. Thread-safe: all methods are const and keep no state per call.
+///
+/// Every material carries the Whitted terms: kr (mirror reflection), kt (transmission), the indices of
+/// refraction inside and outside (a hollow glass shell holds air: an inner surface with inside 1, outside
+/// 1.5, or a reversed one), Fresnel weighting of kr and kt, an emission colour, an opacity (cut-outs; shadow
+/// rays see it too; rtlab::opacity() of texture_param.hpp: a texture's alpha when it has one, else its
+/// channel mean) and a Beer-Lambert absorption coefficient for the medium inside.
+class Material {
+public:
+    /// The Whitted terms every material shares (textures are looked up in terms()).
+    struct Whitted {
+        std::shared_ptr<const Texture> kr, kt, emission, opacity;
+        float ior_inside = 1.0f, ior_outside = 1.0f;
+        bool fresnel = false;
+        RGB absorption;  ///< per unit distance inside the medium; 0 = clear
+    };
+
+    explicit Material(Whitted whitted);
+    virtual ~Material() = default;
+
+    /// Every texture looked up for one hit. lookup.point is the object-space point, lookup.direction the
+    /// ray's direction.
+    SurfaceTerms terms(const TextureLookup& lookup) const;
+
+    /// What multiplies the light arriving from wi (see Convention): f(wo, wi) cos(theta_i) when physical.
+    /// wo and wi are unit vectors in the local shading frame (normal = +z), on the viewer's side; black when
+    /// either is below the surface.
+    virtual RGB direct(const SurfaceTerms& terms, const Vec3& wo, const Vec3& wi, Convention convention) const = 0;
+    /// Whether direct() can be non-black: mirror and glass skip their lights and shadow rays.
+    virtual bool reflects_direct_light() const { return true; }
+
+    /// The fraction of light a shadow ray keeps crossing this surface: (1 - opacity) + opacity kt.
+    RGB shadow_transmittance(const TextureLookup& lookup) const;
+    /// Whether a shadow ray can cross this surface at all (kt not constant 0, or opacity not constant 1).
+    bool transmits_shadows() const { return m_transmits; }
+
+    float ior_inside() const { return m_whitted.ior_inside; }
+    float ior_outside() const { return m_whitted.ior_outside; }
+    bool fresnel() const { return m_whitted.fresnel; }
+    const RGB& absorption() const { return m_whitted.absorption; }
+
+protected:
+    /// The model's own textures (diffuse, specular, shape numbers) for one hit.
+    virtual void local_terms(const TextureLookup& lookup, SurfaceTerms& terms) const = 0;
+
+private:
+    /// A Whitted term with its value when constant, so constant terms cost no virtual call per hit.
+    struct Term {
+        const Texture* texture = nullptr;  // null when constant
+        RGB value;
+    };
+    static Term make_term(const std::shared_ptr<const Texture>& texture, const RGB& fallback);
+    static RGB eval(const Term& term, const TextureLookup& lookup);
+    float opacity(const TextureLookup& lookup) const;
+
+    Whitted m_whitted;
+    Term m_kr, m_kt, m_emission, m_opacity;
+    bool m_transmits = false;
+};
+
+using MaterialRegistry = Registry<Material>;
+
+/// Registers lambert, phong, blinn-phong, cook-torrance, ashikhmin-shirley, mirror and glass. Each doc() lists the
+/// parameters; the Whitted parameters (kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption) are accepted
+/// by all.
+void register_builtins(MaterialRegistry& registry);
+
+/// A registry with category "material" and every built-in registered.
+MaterialRegistry make_material_registry();
+
+}  // namespace rtlab

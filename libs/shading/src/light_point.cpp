@@ -1,0 +1,49 @@
+// Light "point": light from one point, equal in every direction.
+//
+// Parameters
+//   position    point                                                    default [0, 0, 0]
+//   intensity   colour, >= 0 (radiant intensity)                         default 1
+//
+// physical: intensity / r^2 arrives; classic: intensity, at any distance.
+#include "light_common.hpp"
+
+namespace rtlab::shading_detail {
+
+namespace {
+class PointLight final : public Light {
+public:
+    PointLight(const Point3& position, const RGB& intensity) : m_position(position), m_intensity(intensity) {}
+
+    LightSample sample(const Point3& p, int, Vec2, Convention c) const override {
+        return point_sample(p, m_position, m_intensity, c);
+    }
+
+private:
+    Point3 m_position;
+    RGB m_intensity;
+};
+}  // namespace
+
+LightSample point_sample(const Point3& p, const Point3& position, const RGB& intensity, Convention c) {
+    LightSample s;
+    s.position = position;
+    const Vec3 d = position - p;
+    const float r2 = glm::dot(d, d);
+    if (!(r2 > 0.0f) || !std::isfinite(r2)) return s;  // at the light itself: nothing defined arrives
+    s.wi = d / std::sqrt(r2);
+    s.arriving = c == Convention::physical ? intensity / r2 : intensity;
+    return s;
+}
+
+void register_point(LightRegistry& registry) {
+    registry.add(
+        "point",
+        [](const Params& p) -> std::shared_ptr<Light> {
+            return std::make_shared<PointLight>(finite_vec3(p, "position", Vec3(0.0f)),
+                                                non_negative_rgb(p, "intensity", RGB(1.0f)));
+        },
+        "point light. position (default [0, 0, 0]); intensity: colour >= 0 (default 1), divided by r^2 in the "
+        "physical convention, not in the classic one");
+}
+
+}  // namespace rtlab::shading_detail

@@ -1,0 +1,45 @@
+// Material "lambert": ideal diffuse reflection.
+//
+// Parameters
+//   albedo   diffuse reflectance, colour or texture                      default 0.5
+//   + the Whitted terms of every material (builtin_params.cpp: kWhittedDoc)
+//
+// physical: albedo / pi cos(theta_i); classic: albedo cos(theta_i).
+#include <rtlab/shading/brdf.hpp>
+
+#include "builtin_params.hpp"
+
+namespace rtlab::shading_detail {
+
+namespace {
+class LambertMaterial final : public Material {
+public:
+    LambertMaterial(Whitted w, std::shared_ptr<const Texture> albedo)
+        : Material(std::move(w)), m_albedo(std::move(albedo)) {}
+
+    RGB direct(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, Convention c) const override {
+        if (!(wo.z > 0.0f && wi.z > 0.0f)) return {};
+        return t.diffuse * (c == Convention::physical ? wi.z * kInvPi : wi.z);
+    }
+
+protected:
+    void local_terms(const TextureLookup& q, SurfaceTerms& t) const override { t.diffuse = m_albedo.eval(q); }
+
+private:
+    ColourChannel m_albedo;
+};
+}  // namespace
+
+void register_lambert(MaterialRegistry& registry) {
+    registry.add(
+        "lambert",
+        [](const Params& p) -> std::shared_ptr<Material> {
+            auto albedo = colour_param(p, "albedo", RGB(0.5f));
+            return std::make_shared<LambertMaterial>(read_whitted(p, {}), std::move(albedo));
+        },
+        std::string("ideal diffuse: albedo / pi (classic: albedo, no pi). albedo: colour or texture (default "
+                    "0.5).") +
+            kWhittedDoc);
+}
+
+}  // namespace rtlab::shading_detail

@@ -1,0 +1,181 @@
+#include <rtlab/core/error.hpp>
+#include <rtlab/core/frame.hpp>
+#include <rtlab/geometry/spawn.hpp>
+#include <rtlab/shading/optics.hpp>
+#include <rtlab/shading/whitted.hpp>
+
+#include <cmath>
+
+namespace rtlab {
+
+namespace {
+
+RGB exp_rgb(const RGB& c) { return {std::exp(c.r), std::exp(c.g), std::exp(c.b)}; }
+
+// A smooth normal can send a reflection below the true surface (or a refraction above it), where it would
+// start inside the object and leak light. Such a direction is mirrored in the true tangent plane, which
+// keeps its tangential part; `side` is +1 for "above ng" (reflection) and -1 for "below" (refraction).
+Vec3 keep_on_side(Vec3 dir, const Normal3& ng, float side) {
+    const float c = glm::dot(dir, ng) * side;
+    if (c > 0.0f) return dir;
+    dir -= 2.0f * glm::dot(dir, ng) * ng;
+    if (glm::dot(dir, ng) * side <= 0.0f) dir += side * 1e-3f * ng;  // exactly in the plane
+    return glm::normalize(dir);
+}
+
+// The shading frame: the shading normal, and the surface tangent as local +x (anisotropic models need it).
+Frame shading_frame(const Normal3& n, const Vec3& tangent) {
+    Vec3 s = tangent - glm::dot(tangent, n) * n;
+    const float len = glm::length(s);
+    if (!(len > 1e-6f) || !std::isfinite(len)) return Frame::from_normal(n);
+    s /= len;
+    return Frame{s, glm::cross(n, s), n};
+}
+
+}  // namespace
+
+WhittedIntegrator::WhittedIntegrator(const SceneQuery& scene, std::vector<std::shared_ptr<const Light>> lights,
+                                     WhittedOptions options)
+    : m_scene(scene), m_lights(std::move(lights)), m_options(std::move(options)) {
+    for (std::size_t i = 0; i < m_lights.size(); ++i)
+        if (!m_lights[i]) throw Error("whitted: light " + std::to_string(i) + " is null");
+    if (m_options.max_depth < 0) throw Error("whitted: max_depth must be >= 0");
+    if (!(m_options.min_weight >= 0.0f)) throw Error("whitted: min_weight must be >= 0");
+}
+
+RGB WhittedIntegrator::radiance(const Ray& ray, const SampleKey& key, RayStats& stats) const {
+    return trace(ray, key, 0, 0, 1.0f, stats);
+}
+
+RGB WhittedIntegrator::escaped(const Ray& ray) const {
+    if (!m_options.environment) return m_options.background;
+    TextureLookup q;
+    q.direction = ray.direction;
+    return m_options.environment->eval(q);
+}
+
+RGB WhittedIntegrator::transmittance(const SurfaceHit& from, const LightSample& light, RayStats& stats) const {
+    auto segment = [&light](const SurfaceHit& h) {
+        return light.at_infinity ? spawn_ray(h, light.wi) : spawn_ray_to(h, light.position);
+    };
+    Ray ray = segment(from);
+    ++stats.shadow;
+    if (m_scene.occluded(ray)) return {};
+    RGB through(1.0f);
+    Point3 last = from.point;  // distances between the hit points themselves, free of the spawn offsets
+    for (int i = 0; i < m_options.max_crossings; ++i) {
+        SurfaceHit h;
+        if (!m_scene.intersect_transmissive(ray, h)) return through;
+        const SurfaceInfo info = m_scene.surface(h);
+        TextureLookup q;
+        q.uv = h.uv;
+        q.point = h.object_point;  // solid textures in object space, also through instances
+        q.direction = ray.direction;
+        RGB c = info.material->shadow_transmittance(q);
+        const RGB& sigma = info.material->absorption();
+        if (!sigma.is_black()) {
+            // Leaving the medium: the stretch since the last crossing (or the start) was inside it.
+            const Normal3 outward = info.flags.reversed ? -h.geometric_normal : h.geometric_normal;
+            if (glm::dot(ray.direction, outward) > 0.0f) c *= exp_rgb(sigma * -glm::length(h.point - last));
+        }
+        last = h.point;
+        through *= c;
+        if (through.is_black()) return through;
+        ray = segment(h);
+        ++stats.shadow;
+    }
+    return through;
+}
+
+RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, int crossings, float weight,
+                             RayStats& stats) const {
+    const float dlen = glm::length(ray.direction);
+    if (!(dlen > 0.0f) || !std::isfinite(dlen)) return {};
+    SurfaceHit hit;
+    if (!m_scene.intersect(ray, hit)) return escaped(ray);
+    const SurfaceInfo info = m_scene.surface(hit);
+    const Material& material = *info.material;
+    const Vec3 d = ray.direction / dlen;
+    const Vec3 wo = -d;
+
+    Normal3 ng = info.flags.reversed ? -hit.geometric_normal : hit.geometric_normal;
+    Normal3 ns = info.flags.reversed ? -hit.shading_normal : hit.shading_normal;
+    const bool entering = glm::dot(d, ng) < 0.0f;
+    // Both sides shade: turn the normals towards the viewer. A shading normal still facing away (a smooth
+    // normal at a silhouette) gives way to the true one.
+    if (!entering) {
+        ng = -ng;
+        ns = -ns;
+    }
+    if (!(glm::dot(ns, wo) > 0.0f) || !is_finite(ns)) ns = ng;
+
+    TextureLookup q;
+    q.uv = hit.uv;
+    q.point = hit.object_point;
+    q.direction = d;
+    const SurfaceTerms t = material.terms(q);
+
+    // A cut-out lets 1 - opacity through, as if the surface were not there (not counted as a bounce).
+    RGB behind;
+    if (t.opacity < 1.0f && crossings < m_options.max_crossings) {
+        const float w = weight * (1.0f - t.opacity);
+        ++stats.refracted;
+        behind = (1.0f - t.opacity) * trace(spawn_ray(hit, d), key, depth, crossings + 1, w, stats);
+        if (t.opacity <= 0.0f) return behind;
+    }
+
+    RGB L = t.emission;
+    if (material.reflects_direct_light()) {
+        const Frame frame = shading_frame(ns, hit.tangent);
+        const Vec3 wo_local = frame.to_local(wo);
+        SampleKey here = key;  // children get the caller's key and add their own depth
+        here.bounce += static_cast<std::uint32_t>(depth);
+        std::uint32_t dim = kLightDimension;
+        for (const auto& light : m_lights) {
+            L += t.diffuse * light->ambient();
+            const int n = light->sample_count();
+            for (int i = 0; i < n; ++i, dim += 2) {
+                const LightSample s = light->sample(hit.point, i, sample_uniform2(here, dim), m_options.convention);
+                // Light from below the true surface would have to pass through it.
+                if (s.arriving.is_black() || !(glm::dot(s.wi, ng) > 0.0f)) continue;
+                const RGB f = material.direct(t, wo_local, frame.to_local(s.wi), m_options.convention);
+                if (f.is_black()) continue;
+                L += f * s.arriving * transmittance(hit, s, stats);
+            }
+        }
+    }
+
+    if (depth < m_options.max_depth && !(t.kr.is_black() && t.kt.is_black())) {
+        RGB kr = t.kr, kt = t.kt;
+        const float eta =
+            entering ? material.ior_outside() / material.ior_inside() : material.ior_inside() / material.ior_outside();
+        const std::optional<Vec3> refracted = refract(d, ns, eta);
+        if (material.fresnel()) {
+            const float f = fresnel_dielectric(glm::dot(wo, ns), eta);
+            kr *= f;
+            kt *= 1.0f - f;
+        }
+        if (!refracted) {  // total internal reflection: what would have been transmitted is reflected
+            kr += kt;
+            kt = RGB{};
+        }
+        const float wr = weight * kr.max_component();
+        if (wr > m_options.min_weight) {
+            ++stats.reflected;
+            const Vec3 r = keep_on_side(reflect(d, ns), ng, 1.0f);
+            L += kr * trace(spawn_ray(hit, r), key, depth + 1, crossings, wr, stats);
+        }
+        const float wt = weight * kt.max_component();
+        if (refracted && wt > m_options.min_weight) {
+            ++stats.refracted;
+            const Vec3 dir = keep_on_side(glm::normalize(*refracted), ng, -1.0f);
+            L += kt * trace(spawn_ray(hit, dir), key, depth + 1, crossings, wt, stats);
+        }
+    }
+
+    // A ray arriving from inside an absorbing medium has crossed it from where it started.
+    if (!entering && !material.absorption().is_black()) L *= exp_rgb(material.absorption() * (-hit.t * dlen));
+    return t.opacity < 1.0f ? t.opacity * L + behind : L;
+}
+
+}  // namespace rtlab
