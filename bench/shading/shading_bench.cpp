@@ -10,6 +10,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,9 @@ void per_item(benchmark::State& state) {
                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-const char* const kMaterials[] = {"lambert", "phong", "blinn-phong", "mirror", "glass"};
+const char* const kMaterials[] = {"lambert",           "phong",  "blinn-phong", "cook-torrance",
+                                  "ashikhmin-shirley", "mirror", "glass"};
+constexpr int kLastMaterial = static_cast<int>(std::size(kMaterials)) - 1;
 
 std::shared_ptr<const Light> point_light(const Point3& at, float intensity) {
     Params p;
@@ -57,7 +60,7 @@ void BM_material_shade(benchmark::State& state) {
     state.SetLabel(kMaterials[state.range(0)]);
     per_item(state);
 }
-BENCHMARK(BM_material_shade)->DenseRange(0, 4);
+BENCHMARK(BM_material_shade)->DenseRange(0, kLastMaterial);
 
 // radiance() of a primary ray hitting a sphere on a floor: closest hit over 2 shapes, the material, one
 // point light with its shadow ray; max_depth 0, so mirror and glass stop at their own hit.
@@ -82,7 +85,7 @@ void BM_primary_hit(benchmark::State& state) {
     state.SetLabel(kMaterials[state.range(0)]);
     per_item(state);
 }
-BENCHMARK(BM_primary_hit)->DenseRange(0, 4);
+BENCHMARK(BM_primary_hit)->DenseRange(0, kLastMaterial);
 
 // One shadow ray from a floor point to a point light through N panes of kt 0.9 (and no opaque caster):
 // the any-hit query, then N + 1 transmissive closest-hit queries.

@@ -1,22 +1,16 @@
 #pragma once
 // Compares an accelerator's answers with brute force on the same triangle test.
 #include <rtlab/accel/accelerator.hpp>
+#include <rtlab/accel/hit_agreement.hpp>
 
-#include <cmath>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace rtlab::test {
 
-/// The mismatch rule of the issue: hit/miss disagreement, |dt| > 1e-4 relative, or a different
-/// primitive at a t more than 1e-4 relative apart.
-inline bool same_hit(bool hit_a, const MeshHit& a, bool hit_b, const MeshHit& b) {
-    if (hit_a != hit_b) return false;
-    if (!hit_a) return true;
-    const float tol = 1e-4f * std::max(1.0f, std::max(std::abs(a.t), std::abs(b.t)));
-    return std::abs(a.t - b.t) <= tol;
-}
+/// The library's rule (rtlab/accel/hit_agreement.hpp), the one rtlab-accel counts mismatches by.
+using rtlab::same_hit;
 
 struct Agreement {
     int rays = 0, mismatches = 0, anyhit_mismatches = 0, hits = 0;
@@ -39,7 +33,8 @@ inline std::vector<Answer> answers(const TriangleAccelerator& accel, std::span<c
 }
 
 /// Compares accel's closest and any-hit answers with the reference answers to the same rays.
-inline Agreement compare(const TriangleAccelerator& accel, const std::vector<Answer>& reference, std::span<const Ray> rays) {
+inline Agreement compare(const TriangleAccelerator& accel, const std::vector<Answer>& reference,
+                         std::span<const Ray> rays) {
     Agreement a;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         MeshHit h;

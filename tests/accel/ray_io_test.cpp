@@ -7,7 +7,10 @@
 #include "shared_data.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <random>
+#include <string>
 
 using namespace rtlab;
 using Catch::Matchers::Contains;
@@ -17,7 +20,8 @@ const auto dir = test::scratch_dir("accel_rays");
 }
 
 TEST_CASE("ray and hit files round-trip exactly", "[rays]") {
-    const std::vector<Ray> rays = {Ray{{1, 2, 3}, {0, -0.0f, 1}, 0.5f, kInfinity}, Ray{{-1e6f, 0, 1e-30f}, {3, 4, 5}, 0, 7}};
+    const std::vector<Ray> rays = {Ray{{1, 2, 3}, {0, -0.0f, 1}, 0.5f, kInfinity},
+                                   Ray{{-1e6f, 0, 1e-30f}, {3, 4, 5}, 0, 7}};
     write_ray_file(dir / "r.rays", rays);
     const auto back = read_ray_file(dir / "r.rays");
     REQUIRE(back.size() == 2);
@@ -44,7 +48,8 @@ TEST_CASE("malformed ray files are rejected with the file name", "[rays]") {
     };
     auto truncated = bytes;
     truncated.pop_back();
-    CHECK_THROWS_WITH(read_ray_file(write("short.rays", truncated)), Contains("short.rays") && Contains("does not hold"));
+    CHECK_THROWS_WITH(read_ray_file(write("short.rays", truncated)),
+                      Contains("short.rays") && Contains("does not hold"));
     auto extra = bytes;
     extra.push_back(0);
     CHECK_THROWS_WITH(read_ray_file(write("long.rays", extra)), Contains("does not hold"));
@@ -56,6 +61,49 @@ TEST_CASE("malformed ray files are rejected with the file name", "[rays]") {
     CHECK_THROWS_WITH(read_ray_file(write("huge.rays", huge)), Contains("does not hold"));
     CHECK_THROWS_WITH(read_ray_file(write("tiny.rays", {'R', 'T'})), Contains("shorter than its 16-byte header"));
     CHECK_THROWS_WITH(read_ray_file(dir / "absent.rays"), Contains("absent.rays"));
+}
+
+TEST_CASE("spawn files round-trip exactly with every int32 value", "[rays]") {
+    const std::vector<std::int32_t> triangles = {0, 7, -1, std::numeric_limits<std::int32_t>::max(),
+                                                 std::numeric_limits<std::int32_t>::min()};
+    write_spawn_file(dir / "s.spawn", triangles);
+    CHECK(std::filesystem::file_size(dir / "s.spawn") == 16 + 4 * 5);
+    const auto bytes = read_binary_file(dir / "s.spawn");
+    CHECK(std::string(bytes.begin(), bytes.begin() + 8) == "RTSPAWN1");
+    CHECK(bytes[8] == 5);
+    CHECK(bytes[16 + 4] == 7);  // little-endian
+    CHECK(read_spawn_file(dir / "s.spawn") == triangles);
+    write_spawn_file(dir / "empty.spawn", std::vector<std::int32_t>{});
+    CHECK(read_spawn_file(dir / "empty.spawn").empty());
+}
+
+TEST_CASE("malformed spawn files are rejected with the file name", "[rays]") {
+    write_spawn_file(dir / "good.spawn", std::vector<std::int32_t>{1, 2, 3});
+    const auto bytes = read_binary_file(dir / "good.spawn");
+    auto write = [&](const char* name, std::vector<unsigned char> b) {
+        write_binary_file(dir / name, b);
+        return dir / name;
+    };
+    auto truncated = bytes;
+    truncated.pop_back();
+    CHECK_THROWS_WITH(read_spawn_file(write("short.spawn", truncated)),
+                      Contains("short.spawn") && Contains("does not hold the 3 records") && Contains("16 + 4 N"));
+    auto extra = bytes;
+    extra.insert(extra.end(), {0, 0, 0, 0});  // one whole record more than the header claims
+    CHECK_THROWS_WITH(read_spawn_file(write("long.spawn", extra)), Contains("long.spawn") && Contains("does not hold"));
+    auto huge = bytes;
+    for (int i = 8; i < 16; ++i) huge[i] = 0xFF;  // 4 * count overflows 64 bits
+    CHECK_THROWS_WITH(read_spawn_file(write("huge.spawn", huge)), Contains("does not hold"));
+    auto quarter = bytes;
+    quarter[15] = 0x40;  // 2^62 + 3 records: 4 N wraps to 12, the payload's size
+    CHECK_THROWS_WITH(read_spawn_file(write("wrap.spawn", quarter)), Contains("does not hold"));
+    // A ray file of one ray is 48 bytes, as a spawn file of 8 would be: the magic tells them apart.
+    write_ray_file(dir / "one.rays", std::vector<Ray>(1));
+    CHECK_THROWS_WITH(read_spawn_file(dir / "one.rays"), Contains("one.rays") && Contains("not a spawn file"));
+    CHECK_THROWS_WITH(read_ray_file(dir / "good.spawn"), Contains("good.spawn") && Contains("not a ray file"));
+    CHECK_THROWS_WITH(read_spawn_file(write("tiny.spawn", {'R', 'T', 'S'})),
+                      Contains("tiny.spawn") && Contains("shorter than its 16-byte header"));
+    CHECK_THROWS_WITH(read_spawn_file(dir / "absent.spawn"), Contains("absent.spawn"));
 }
 
 TEST_CASE("the primary ray set follows FORMATS.md", "[rays]") {

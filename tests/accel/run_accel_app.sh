@@ -1,7 +1,8 @@
 #!/bin/sh
 # rtlab-accel end to end on a unit cube written here: every kd method and the baselines agree with brute
 # force (CSV columns as FORMATS.md lists them, zero mismatches), the hit file has one record per ray, a
-# one-ray file gives the expected hit, and a missing or malformed mesh or ray file fails with status 1
+# one-ray file gives the expected hit, rays spawned from the cube's top face (--spawn) leave it outwards
+# and cross to the bottom inwards, and a missing or malformed mesh, ray or spawn file fails with status 1
 # and a message naming the file.
 set -eu
 app=$1
@@ -43,11 +44,30 @@ inf='\000\000\200\177'
 printf "RTRAYS01\001\000\000\000\000\000\000\000$half$half$five$zero$zero$minus_one$zero$inf" > "$work/one.rays"
 "$app" --mesh "$work/cube.obj" --method kd-sah --rays "$work/one.rays" --runs 1 --hits-out "$work/one.hits" > /dev/null
 test "$(od -An -tx1 -j16 -N4 "$work/one.hits" | tr -d ' \n')" = "00008040"
+# Two rays starting at (0.25, 0.75, 1) on triangle 3 of the top face, up and down: spawned, the upward one
+# leaves the cube (a miss), the downward one crosses it to triangle 1 of the bottom face at t just below 1
+# (its origin moved into the cube by the offset, where the ray as given would meet the bottom at 1).
+quarter='\000\000\200\076'; three_quarters='\000\000\100\077'; one='\000\000\200\077'
+printf "RTRAYS01\002\000\000\000\000\000\000\000$quarter$three_quarters$one$zero$zero$one$zero$inf$quarter$three_quarters$one$zero$zero$minus_one$zero$inf" > "$work/top.rays"
+printf 'RTSPAWN1\002\000\000\000\000\000\000\000\003\000\000\000\003\000\000\000' > "$work/top.spawn"
+"$app" --mesh "$work/cube.obj" --method kd-sah --method bvh --rays "$work/top.rays" --spawn "$work/top.spawn" --runs 1 \
+  --hits-out "$work/top.hits" > "$work/top.txt"
+grep -q '^spawned rays, kd-sah: 1 outward, 0 hit their own triangle again; 1 inward, 0 missed$' "$work/top.txt"
+grep -q '^spawned rays, bvh: 1 outward, 0 hit their own triangle again; 1 inward, 0 missed$' "$work/top.txt"
+test "$(od -An -tx1 -j20 -N4 "$work/top.hits" | tr -d ' \n')" = "ffffffff"
+test "$(od -An -tx1 -j36 -N4 "$work/top.hits" | tr -d ' \n')" = "01000000"
+od -An -tf4 -j32 -N4 "$work/top.hits" | awk '{ exit !($1 > 0.999 && $1 < 1) }'
+printf 'RTSPAWN1\001\000\000\000\000\000\000\000\003\000\000\000' > "$work/count.spawn"
+printf 'RTSPAWN1\002\000\000\000\000\000\000\000\003\000\000\000\014\000\000\000' > "$work/range.spawn"
 # Bad input: status 1 and the file named.
 printf 'v 0 0 0\nv 1 0 0\nv nope 1 0\nf 1 2 3\n' > "$work/bad.obj"
 printf 'RTRAYS01\001\000\000\000\000\000\000\000abc' > "$work/bad.rays"
 for case in "--mesh $work/missing.obj:missing.obj" "--mesh $work/bad.obj:bad.obj" \
-            "--mesh $work/cube.obj --rays $work/bad.rays:bad.rays" "--mesh $work/cube.obj --method kd-nope:kd-nope"; do
+            "--mesh $work/cube.obj --rays $work/bad.rays:bad.rays" "--mesh $work/cube.obj --method kd-nope:kd-nope" \
+            "--mesh $work/cube.obj --rays $work/top.rays --spawn $work/count.spawn:count.spawn" \
+            "--mesh $work/cube.obj --rays $work/top.rays --spawn $work/range.spawn:range.spawn" \
+            "--mesh $work/cube.obj --rays $work/top.rays --spawn $work/bad.rays:bad.rays" \
+            "--mesh $work/cube.obj --rays random --spawn $work/top.spawn:top.spawn"; do
   args=${case%:*}
   name=${case##*:}
   status=0

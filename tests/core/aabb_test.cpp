@@ -1,4 +1,5 @@
 #include <rtlab/core/aabb.hpp>
+#include <rtlab/core/box_ray.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -35,6 +36,109 @@ TEST_CASE("slab test: rays lying exactly in a face plane", "[aabb]") {
         const auto hit2 = unit_box.intersect(Ray{{-5, -1, 1}, {1, zero, zero}});
         REQUIRE(hit2);
     }
+}
+
+TEST_CASE("slab test: rays in every face plane with +0 and -0 components", "[aabb]") {
+    // For each face (axis a, side lo or hi) and each of the two other axes b as the direction: the origin
+    // lies in the face plane, 5 before the box along b, and the direction's a component is +0 or -0.
+    // The ray runs in the face through the box: [4, 6] exactly, for every sign of every zero.
+    int checked = 0;
+    for (int a = 0; a < 3; ++a)
+        for (float side : {-1.0f, 1.0f})
+            for (int b = 0; b < 3; ++b) {
+                if (b == a) continue;
+                for (float along : {-1.0f, 1.0f})
+                    for (float za : {0.0f, -0.0f})
+                        for (float zc : {0.0f, -0.0f}) {
+                            const int c = 3 - a - b;
+                            Point3 o(0.0f);
+                            Vec3 d(0.0f);
+                            o[a] = side;
+                            o[b] = -5.0f * along;
+                            o[c] = 0.5f;
+                            d[a] = za;
+                            d[b] = along;
+                            d[c] = zc;
+                            const auto hit = unit_box.intersect(Ray{o, d});
+                            INFO("face axis " << a << " side " << side << " along " << b << " " << along);
+                            REQUIRE(hit);
+                            CHECK(hit->min == 4.0f);
+                            CHECK(hit->max >= 6.0f);
+                            CHECK(hit->max <= 6.0f * (1.0f + 2.0f * gamma_bound(3)));
+                            // Just outside the face plane: a miss whatever the zero's sign.
+                            o[a] = std::nextafter(side, 2.0f * side);
+                            CHECK_FALSE(unit_box.intersect(Ray{o, d}));
+                            ++checked;
+                        }
+            }
+    CHECK(checked == 96);
+}
+
+TEST_CASE("slab test: edges flat boxes and zero directions", "[aabb]") {
+    for (float z : {0.0f, -0.0f}) {
+        // Along an edge (y = 1, z = -1) with both other components zero.
+        const auto edge = unit_box.intersect(Ray{{-3, 1, -1}, {2, z, z}});
+        REQUIRE(edge);
+        CHECK(edge->min == 1.0f);
+        // A flat box (zero thickness in y) and a ray in its plane: a hit; just beside it: a miss.
+        const AABB flat{{-1, 2, -1}, {1, 2, 1}};
+        const auto in_plane = flat.intersect(Ray{{0, 2, -4}, {z, z, 1}});
+        REQUIRE(in_plane);
+        CHECK(in_plane->min == 3.0f);
+        CHECK_FALSE(flat.intersect(Ray{{0, std::nextafter(2.0f, 3.0f), -4}, {z, z, 1}}));
+        // Crossing the flat box: entry and exit at the same t.
+        const auto cross = flat.intersect(Ray{{0.5f, 0, 0.5f}, {z, 1, z}});
+        REQUIRE(cross);
+        CHECK(cross->min == 2.0f);
+        CHECK(cross->max >= 2.0f);
+        // A zero direction: inside is [tmin, tmax], outside is a miss even with tmax infinite.
+        const auto still = unit_box.intersect(Ray{{0.5f, 0.5f, 0.5f}, {z, z, z}, 0.0f, 10.0f});
+        REQUIRE(still);
+        CHECK(still->min == 0.0f);
+        CHECK(still->max == 10.0f);
+        // Outside on either side, also for the whole line (tmin = -inf, as the box shape asks) and for a
+        // ray moving along another axis: the zero axis gives an entry at +inf or an exit at -inf.
+        for (float x : {3.0f, -3.0f}) {
+            CHECK_FALSE(unit_box.intersect(Ray{{x, 0, 0}, {z, z, z}}));
+            CHECK_FALSE(unit_box.intersect(Ray{{x, 0, 0}, {z, z, z}, -kInf, kInf}));
+            CHECK_FALSE(unit_box.intersect(Ray{{x, 0, -5}, {z, z, 1}, -kInf, kInf}));
+        }
+        const auto line = unit_box.intersect(Ray{{0.5f, 0, -5}, {z, z, 1}, -kInf, kInf});
+        REQUIRE(line);
+        CHECK(line->min == 4.0f);
+    }
+}
+
+TEST_CASE("AABB intersect and BoxRay clip agree on random rays with zero components and face origins", "[aabb]") {
+    std::uint32_t state = 3;
+    auto next = [&] {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) * 0x1p-24f;
+    };
+    // Coordinates drawn from the box planes, just beside them, and the inside, so that origins sit on faces.
+    const float picks[] = {-1.0f, 1.0f, std::nextafter(1.0f, 2.0f), std::nextafter(-1.0f, -2.0f), 0.0f, 0.25f, -3.0f};
+    int hits = 0, disagree = 0;
+    for (int i = 0; i < 200000; ++i) {
+        Point3 o;
+        Vec3 d;
+        for (int a = 0; a < 3; ++a) {
+            o[a] = picks[static_cast<int>(next() * 7.0f)];
+            const float r = next();
+            d[a] = r < 0.2f ? 0.0f : r < 0.4f ? -0.0f : (next() - 0.5f) * 4.0f;
+        }
+        const float tmin = next() < 0.3f ? -kInf : 0.0f;
+        const float tmax = next() < 0.5f ? kInf : next() * 8.0f;
+        const Ray ray{o, d, tmin, tmax};
+        const auto hit = unit_box.intersect(ray);
+        float t0 = 0.0f, t1 = 0.0f;
+        const bool clip = BoxRay(ray).clip(unit_box, tmax, t0, t1) && t0 <= tmax && t0 < kInf && t1 > -kInf;
+        hits += hit ? 1 : 0;
+        if (hit.has_value() != clip || (hit && (hit->min != t0 || hit->max != std::min(t1, tmax)))) ++disagree;
+        // A hit's range is inside the ray's.
+        if (hit && !(hit->min >= tmin && hit->max <= tmax && hit->min <= hit->max)) ++disagree;
+    }
+    CHECK(disagree == 0);
+    CHECK(hits > 20000);
 }
 
 TEST_CASE("slab test: denormal direction components do not produce NaN", "[aabb]") {

@@ -70,7 +70,6 @@ TEST_CASE("malformed OBJ files give errors naming the file and the problem", "[o
         {"infv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 -inf\nf 1 2 3\n", "line 3: vertex coordinate 3"},
         {"shortv.obj", "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: vertex coordinate 3 is missing"},
         {"wordv.obj", "v 0 0 0\nv one 0 0\nv 0 1 0\nf 1 2 3\n", "line 2: vertex coordinate 1"},
-        {"zeroindex.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "zeroindex.obj"},
     };
     for (const auto& c : cases) {
         INFO(c.name);
@@ -80,4 +79,77 @@ TEST_CASE("malformed OBJ files give errors naming the file and the problem", "[o
     }
     CHECK_THROWS_WITH(load_obj(dir / "missing.obj"), Contains("missing.obj") && Contains("no such file"));
     CHECK_THROWS_WITH(load_obj(dir), Contains("is a directory"));
+}
+
+namespace {
+const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+const std::string kTriangleUvNormal = kTriangle + "vt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n";
+}  // namespace
+
+TEST_CASE("OBJ face indices that do not name a vertex are errors naming the file and the line", "[obj]") {
+    struct Bad {
+        const char* name;
+        std::string content;
+        const char* error;
+    };
+    // tinyobjloader reads indices with atoi: 20 digits wrap to -1 (the last vertex), 4294967299 wraps to 3.
+    const Bad cases[] = {
+        {"huge.obj", kTriangle + "f 1 2 12345678901234567890\n",
+         "line 4: vertex index 12345678901234567890 out of range"},
+        {"wrap.obj", kTriangle + "f 1 2 4294967299\n", "line 4: vertex index 4294967299 out of range (3 vertices)"},
+        {"hugeneg.obj", kTriangle + "f 1 2 -12345678901234567890\n", "line 4: vertex index -12345678901234567890"},
+        {"zero.obj", kTriangle + "f 0 1 2\n", "line 4: vertex index 0"},
+        {"beyond.obj", kTriangle + "# a comment\n\nf 1 2 4\n", "line 6: vertex index 4 out of range (3 vertices)"},
+        {"before.obj", kTriangle + "f -1 -2 -4\n", "line 4: vertex index -4 reaches before the first vertex"},
+        // Relative to the vertices read so far: two at line 3, though the file has three.
+        {"early.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n", "line 3: vertex index -3 reaches before the first"},
+        {"garbage.obj", kTriangleUvNormal + "f 1/2/x 2/2/1 3/3/1\n", "line 8: face corner '1/2/x' is malformed"},
+        {"letters.obj", kTriangle + "f 1 2 x\n", "line 4: face corner 'x' is malformed"},
+        {"suffix.obj", kTriangle + "f 1 2 3x\n", "line 4: face corner '3x' is malformed"},
+        {"decimal.obj", kTriangle + "f 1 2 3.0\n", "line 4: face corner '3.0' is malformed"},
+        {"slash.obj", kTriangle + "f 1/ 2 3\n", "line 4: face corner '1/' is malformed"},
+        {"emptyvn.obj", kTriangle + "f 1// 2 3\n", "line 4: face corner '1//' is malformed"},
+        {"fourslots.obj", kTriangleUvNormal + "f 1/1/1/1 2/2/1 3/3/1\n", "line 8: face corner '1/1/1/1' is malformed"},
+        {"minus.obj", kTriangle + "f 1 2 -\n", "line 4: face corner '-' is malformed"},
+        {"uvrange.obj", kTriangleUvNormal + "f 1/4/1 2/2/1 3/3/1\n",
+         "line 8: texture coordinate index 4 out of range (3 texture coordinates)"},
+        {"uvhuge.obj", kTriangleUvNormal + "f 1/99999999999/1 2/2/1 3/3/1\n",
+         "line 8: texture coordinate index 99999999999 out of range"},
+        {"normalzero.obj", kTriangleUvNormal + "f 1//0 2//1 3//1\n", "line 8: normal index 0"},
+        {"normalneg.obj", kTriangleUvNormal + "f 1//-2 2//1 3//1\n",
+         "line 8: normal index -2 reaches before the first"},
+        // Line numbers count old Mac (CR) and DOS (CRLF) line ends as tinyobjloader does.
+        {"cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 5\r", "line 4: vertex index 5 out of range"},
+        {"crlf.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 5\r\n", "line 4: vertex index 5 out of range"},
+        {"crvertex.obj", "v 0 0 0\rv 1 nan 0\rv 0 1 0\rf 1 2 3\r", "line 2: vertex coordinate 2"},
+        {"indented.obj", "v 0 0 0\n  v 1 nan 0\nv 0 1 0\n\tf 1 2 3\n", "line 2: vertex coordinate 2"},
+        {"indentedf.obj", kTriangle + "  \tf 1 2 0\n", "line 4: vertex index 0"},
+    };
+    int rejected = 0;
+    for (const auto& c : cases) {
+        INFO(c.name);
+        const auto path = write_file(c.name, c.content);
+        CHECK_THROWS_WITH(load_obj(path), Contains(c.name) && Contains(c.error));
+        try {
+            load_obj(path);
+        } catch (const Error&) {
+            ++rejected;
+        }
+    }
+    CHECK(rejected == static_cast<int>(std::size(cases)));
+}
+
+TEST_CASE("OBJ face corners in every legal form still load", "[obj]") {
+    // v, v/vt, v//vn, v/vt/vn, positive and relative, '+' signs, tabs, CRLF and trailing blanks.
+    const auto path = write_file("forms.obj", kTriangleUvNormal +
+                                                  "v 1 1 0\n"
+                                                  "f 1 2 3\n"
+                                                  "f 1/1 2/2 3/3\n"
+                                                  "f\t1//1\t2//1  3//1 \r\n"
+                                                  "f 1/1/1 +2/2/1 -2/-1/-1\n"
+                                                  "f -4 -3 -1 \n");
+    const TriangleMesh m = load_obj(path);
+    REQUIRE(m.triangle_count() == 5);
+    CHECK(m.corner(3, 2) == Point3(0, 1, 0));  // -2 of four vertices
+    CHECK(m.corner(4, 2) == Point3(1, 1, 0));
 }

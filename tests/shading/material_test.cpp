@@ -1,8 +1,12 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/shading/brdf.hpp>
 #include <rtlab/shading/material.hpp>
+#include <rtlab/textures/image_texture.hpp>
+#include <rtlab/textures/texture_param.hpp>
 
 #include <catch2/catch.hpp>
+
+#include "shared_data.hpp"
 
 #include <cmath>
 #include <memory>
@@ -32,6 +36,19 @@ public:
     RGB eval(const TextureLookup& q) const override { return {q.uv.x, q.uv.y, q.point.z}; }
 };
 
+// A texture with an alpha channel whose colour and alpha disagree, as an RGBA image's may.
+class AlphaTexture final : public Texture {
+public:
+    AlphaTexture(const RGB& c, float a) : m_c(c), m_a(a) {}
+    RGB eval(const TextureLookup&) const override { return m_c; }
+    bool has_alpha() const override { return true; }
+    float alpha(const TextureLookup&) const override { return m_a; }
+
+private:
+    RGB m_c;
+    float m_a;
+};
+
 std::string error_of(const std::string& name, Params p) {
     try {
         make(name, std::move(p));
@@ -51,7 +68,8 @@ Vec3 at_angle(float degrees, float azimuth_degrees = 0.0f) {
 TEST_CASE("every built-in material is registered with its parameters documented", "[material]") {
     const MaterialRegistry r = make_material_registry();
     CHECK(r.category() == "material");
-    CHECK(r.names() == std::vector<std::string>{"blinn-phong", "glass", "lambert", "mirror", "phong"});
+    CHECK(r.names() == std::vector<std::string>{"ashikhmin-shirley", "blinn-phong", "cook-torrance", "glass", "lambert",
+                                                "mirror", "phong"});
     for (const auto& name : r.names()) {
         INFO(name);
         CHECK(r.doc(name).find("kr") != std::string::npos);
@@ -150,7 +168,7 @@ TEST_CASE("every colour parameter takes a constant or a texture under one key", 
         if (std::string(key) == "albedo") CHECK(t.diffuse == RGB(0.25f, 0.75f, 0.5f));
         if (std::string(key) == "kr") CHECK(t.kr == RGB(0.25f, 0.75f, 0.5f));
         if (std::string(key) == "emission") CHECK(t.emission == RGB(0.25f, 0.75f, 0.5f));
-        if (std::string(key) == "opacity") CHECK(t.opacity == 0.75f);  // the texture's alpha
+        if (std::string(key) == "opacity") CHECK(t.opacity == 0.5f);  // no alpha: the channel mean
     }
     for (const char* key : {"kd", "ks", "exponent"}) {
         INFO(key);
@@ -159,7 +177,7 @@ TEST_CASE("every colour parameter takes a constant or a texture under one key", 
         const SurfaceTerms t = make("phong", p)->terms(q);
         if (std::string(key) == "kd") CHECK(t.diffuse == RGB(0.25f, 0.75f, 0.5f));
         if (std::string(key) == "ks") CHECK(t.specular == RGB(0.25f, 0.75f, 0.5f));
-        if (std::string(key) == "exponent") CHECK(t.shape_u == 0.75f);
+        if (std::string(key) == "exponent") CHECK(t.shape_u == 0.5f);  // a scalar is the channel mean
     }
 }
 
@@ -176,6 +194,56 @@ TEST_CASE("shadow transmittance is 1 - opacity + opacity kt and flags the materi
     cut.set_object<Texture>("opacity", std::make_shared<FixedTexture>(RGB(1.0f)));
     CHECK(make("lambert", cut)->transmits_shadows());  // a texture may cut holes anywhere
     CHECK(make("lambert", cut)->shadow_transmittance({}).is_black());
+}
+
+TEST_CASE("opacity is a texture's alpha when it has one, else its channel mean", "[material]") {
+    // Colour 0.9, alpha 0.2: a rule that read the colour would give 0.9 (mean) or 0.9 (any channel).
+    Params p;
+    p.set_object<Texture>("opacity", std::make_shared<AlphaTexture>(RGB(0.9f), 0.2f));
+    const auto m = make("lambert", p);
+    CHECK(m->terms({}).opacity == 0.2f);
+    CHECK(m->shadow_transmittance({}).g == Approx(0.8f));
+    // Without alpha, the mean of the channels: 0.1, 0.2, 0.6 give 0.3, not the green 0.2.
+    Params q;
+    q.set_object<Texture>("opacity", std::make_shared<FixedTexture>(RGB(0.1f, 0.2f, 0.6f)));
+    CHECK(make("lambert", q)->terms({}).opacity == Approx(0.3f));
+    // A constant list is read by the same rule, and checked in [0, 1] by it.
+    Params c;
+    c.set("opacity", Params::List{0.1, 0.2, 0.6});
+    CHECK(make("lambert", c)->terms({}).opacity == Approx(0.3f));
+    CHECK(make("lambert", c)->transmits_shadows());
+    Params bad;
+    bad.set("opacity", Params::List{1.0, 1.0, 1.6});
+    CHECK(error_of("lambert", bad).find("'opacity'") != std::string::npos);
+}
+
+TEST_CASE("an RGBA PNG is both the colour and the cut-out of Saturn's rings", "[material]") {
+    const auto shared = test::shared_dir();
+    if (!shared) {
+        WARN("../shared not found: skipped");
+        return;
+    }
+    // saturn_ring.png: a radial strip, alpha 0 for the innermost ~5% (x < 108 of 2048), ~0.9 across the B ring.
+    const auto ring = ImageTexture::load(*shared / "textures" / "saturn_ring.png", {.wrap = WrapMode::clamp});
+    REQUIRE(ring->has_alpha());
+    Params p;
+    p.set_object<Texture>("albedo", ring).set_object<Texture>("opacity", ring);
+    const auto m = make("lambert", p);
+    CHECK(m->transmits_shadows());
+    int holes = 0, solid = 0, wrong = 0;
+    for (int x = 0; x < 2048; ++x) {
+        TextureLookup q;
+        q.uv = {(static_cast<float>(x) + 0.5f) / 2048.0f, 0.5f};
+        const SurfaceTerms t = m->terms(q);
+        const float a = ring->alpha(q);
+        if (t.opacity != a || t.diffuse != ring->eval(q)) ++wrong;
+        if (m->shadow_transmittance(q).g != Approx(1.0f - a).margin(1e-6)) ++wrong;
+        if (x < 100 && t.opacity == 0.0f && m->shadow_transmittance(q) == RGB(1.0f)) ++holes;
+        if (a > 0.8f) ++solid;
+    }
+    CHECK(wrong == 0);
+    CHECK(holes == 100);  // the gap inside the rings lets everything through
+    CHECK(solid > 200);   // and the B ring very little
 }
 
 TEST_CASE("classic and physical conventions differ exactly as defined", "[material]") {
@@ -216,4 +284,120 @@ TEST_CASE("classic and physical conventions differ exactly as defined", "[materi
     CHECK_FALSE(make("mirror")->reflects_direct_light());
     CHECK_FALSE(make("glass")->reflects_direct_light());
     CHECK(make("phong")->direct(make("phong")->terms({}), kUp, kUp, Convention::classic).g == Approx(1.0f));
+}
+
+TEST_CASE("cook-torrance is the CookTorranceBrdf times cos, with each Fresnel convention checked by hand",
+          "[material]") {
+    // Light 60 degrees off the normal, viewer in the mirror direction: h = n and cos_d = cos 60 = 0.5.
+    const Vec3 wi = at_angle(60.0f), wo = at_angle(60.0f, 180.0f);
+    const auto ggx = MicrofacetDistribution::from_roughness(MicrofacetModel::ggx, 0.4f);
+    const RGB lobe = CookTorranceBrdf(RGB(0.0f), RGB(1.0f), ggx, Fresnel::one()).eval(wo, wi) * wi.z;
+    REQUIRE(lobe.g > 0.0f);
+    auto direct = [&](Params p, Convention c = Convention::physical) {
+        p.set("roughness", 0.4).set("kd", 0.0);
+        const auto m = make("cook-torrance", p);
+        return m->direct(m->terms({}), wo, wi, c);
+    };
+    // A dielectric lobe: ior over ior_outside in Fresnel::dielectric's convention. By hand with
+    // fresnel_dielectric's n_incident / n_transmitted: light from the outside, 1 / 1.5. The reversed
+    // convention would put 60 degrees beyond the critical angle and give F = 1.
+    const float f_glass = fresnel_dielectric(0.5f, 1.0f / 1.5f);
+    REQUIRE(f_glass < 0.1f);
+    CHECK(direct({}).g == Approx(lobe.g * f_glass).epsilon(1e-5));  // ior defaults to 1.5
+    Params water;
+    water.set("ior", 1.5).set("ior_outside", 1.33);
+    CHECK(direct(water).g == Approx(lobe.g * fresnel_dielectric(0.5f, 1.33f / 1.5f)).epsilon(1e-5));
+    // Conductors: the measured presets and an explicit eta and k, per channel, against fresnel_conductor.
+    Params gold;
+    gold.set("metal", std::string("gold"));
+    const RGB fg = fresnel_conductor(0.5f, kGold);
+    const RGB g = direct(gold);
+    CHECK(g.r == Approx(lobe.r * fg.r).epsilon(1e-5));
+    CHECK(g.b == Approx(lobe.b * fg.b).epsilon(1e-5));
+    CHECK(g.r > 2.0f * g.b);  // gold is yellow
+    Params explicit_ior;
+    explicit_ior.set("eta", Params::List{0.14, 0.43, 1.38}).set("k", Params::List{3.697, 2.455, 1.914});
+    CHECK(direct(explicit_ior).g == Approx(g.g).epsilon(1e-6));
+    // In water the metal's tabulated index is divided by the outside's.
+    Params gold_in_water = gold;
+    gold_in_water.set("ior_outside", 1.33);
+    const ComplexIor in_water{kGold.eta / 1.33f, kGold.k / 1.33f};
+    CHECK(direct(gold_in_water).g == Approx(lobe.g * fresnel_conductor(0.5f, in_water).g).epsilon(1e-5));
+    // Classic: the same times pi (kd (n.l) for the diffuse part).
+    CHECK(direct(gold, Convention::classic).g == Approx(kPi * g.g).epsilon(1e-6));
+    // Beckmann is another lobe; kd adds kd / pi cos.
+    Params beckmann;
+    beckmann.set("distribution", std::string("beckmann"));
+    const auto bk = MicrofacetDistribution::from_roughness(MicrofacetModel::beckmann, 0.4f);
+    CHECK(direct(beckmann).g ==
+          Approx(CookTorranceBrdf(RGB(0.0f), RGB(1.0f), bk, Fresnel::dielectric(1.5f)).eval(wo, wi).g * wi.z)
+              .epsilon(1e-5));
+    CHECK(direct(beckmann).g != Approx(direct({}).g).epsilon(1e-2));
+}
+
+TEST_CASE("cook-torrance and ashikhmin-shirley reject bad parameters and survive absurd textures", "[material]") {
+    auto one = [](const char* key, Params::Value v) {
+        Params p;
+        p.set(key, std::move(v));
+        return p;
+    };
+    CHECK(error_of("cook-torrance", one("roughness", 1.5)).find("'roughness'") != std::string::npos);
+    CHECK(error_of("cook-torrance", one("distribution", std::string("phong"))).find("'distribution'") !=
+          std::string::npos);
+    CHECK(error_of("cook-torrance", one("metal", std::string("brass"))).find("'metal'") != std::string::npos);
+    CHECK(error_of("cook-torrance", one("eta", 0.5)).find("'k'") != std::string::npos);
+    CHECK(error_of("cook-torrance", one("kd", -0.1)).find("'kd'") != std::string::npos);
+    Params both;
+    both.set("metal", std::string("gold")).set("eta", 0.5).set("k", 2.0);
+    CHECK(error_of("cook-torrance", both).find("'metal'") != std::string::npos);
+    Params neg_eta;
+    neg_eta.set("eta", Params::List{1.0, -1.0, 1.0}).set("k", 1.0);
+    CHECK(error_of("cook-torrance", neg_eta).find("'eta'") != std::string::npos);
+    CHECK(error_of("ashikhmin-shirley", one("nu", -1.0)).find("'nu'") != std::string::npos);
+    CHECK(error_of("ashikhmin-shirley", one("nv", 1e20)).find("'nv'") != std::string::npos);
+    CHECK(error_of("ashikhmin-shirley", one("rs", -0.5)).find("'rs'") != std::string::npos);
+
+    // Textures giving NaN, infinities or negatives reach neither an exception nor a NaN.
+    const float nan = std::nanf("");
+    const Vec3 wi = at_angle(30.0f), wo = at_angle(50.0f, 150.0f);
+    for (const RGB& bad : {RGB(nan), RGB(kInfinity), RGB(-2.0f), RGB(1e30f)}) {
+        INFO(bad.r);
+        auto tex = std::make_shared<FixedTexture>(bad);
+        Params ct;
+        ct.set_object<Texture>("kd", tex).set_object<Texture>("ks", tex).set_object<Texture>("roughness", tex);
+        Params as;
+        as.set_object<Texture>("rd", tex).set_object<Texture>("rs", tex);
+        as.set_object<Texture>("nu", tex).set_object<Texture>("nv", tex);
+        for (const auto& [name, p] : {std::pair{"cook-torrance", ct}, std::pair{"ashikhmin-shirley", as}}) {
+            INFO(name);
+            const auto m = make(name, p);
+            RGB f;
+            REQUIRE_NOTHROW(f = m->direct(m->terms({}), wo, wi, Convention::physical));
+            CHECK_FALSE(std::isnan(f.r + f.g + f.b));
+            CHECK(f.r >= 0.0f);
+        }
+    }
+}
+
+TEST_CASE("ashikhmin-shirley is the AshikhminShirleyBrdf times cos, nu along local x, nv default nu", "[material]") {
+    const Vec3 wi = at_angle(40.0f, 10.0f), wo = at_angle(35.0f, 200.0f);
+    Params p;
+    p.set("rd", 0.3).set("rs", 0.2).set("nu", 2000.0).set("nv", 20.0);
+    const auto m = make("ashikhmin-shirley", p);
+    const SurfaceTerms t = m->terms({});
+    const RGB expected = AshikhminShirleyBrdf(RGB(0.3f), RGB(0.2f), 2000.0f, 20.0f).eval(wo, wi) * wi.z;
+    CHECK(m->direct(t, wo, wi, Convention::physical).g == Approx(expected.g).epsilon(1e-6));
+    CHECK(m->direct(t, wo, wi, Convention::classic).g == Approx(kPi * expected.g).epsilon(1e-6));
+    // The lobe around the mirror direction is narrow where the half vector tilts along x (nu = 2000) and
+    // wide along y (nv = 20): the viewer 8 degrees off the mirror direction each way, the half vector ~4.
+    const Vec3 l = at_angle(30.0f);
+    const float along_x = m->direct(t, at_angle(38.0f, 180.0f), l, Convention::physical).g;
+    const float along_y =
+        m->direct(t, glm::normalize(at_angle(30.0f, 180.0f) + Vec3(0, 0.14f, 0)), l, Convention::physical).g;
+    CHECK(along_y > 20.0f * along_x);
+    // nv defaults to nu: an isotropic lobe.
+    Params iso;
+    iso.set("nu", 200.0);
+    const auto mi = make("ashikhmin-shirley", iso);
+    CHECK(mi->terms({}).shape_v == 200.0f);
 }

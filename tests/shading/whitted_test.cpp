@@ -1,6 +1,8 @@
 #include <rtlab/accel/mesh_shape.hpp>
+#include <rtlab/core/frame.hpp>
 #include <rtlab/geometry/instance.hpp>
 #include <rtlab/geometry/quad.hpp>
+#include <rtlab/geometry/spawn.hpp>
 #include <rtlab/geometry/sphere.hpp>
 #include <rtlab/shading/brdf.hpp>
 #include <rtlab/shading/optics.hpp>
@@ -14,6 +16,7 @@
 
 #include <array>
 #include <cmath>
+#include <map>
 #include <string>
 
 using namespace rtlab;
@@ -280,6 +283,7 @@ TEST_CASE("no shadow acne on a lit sphere and plane from 1e-4 to 1e6", "[whitted
     // darker than the same object casting no shadows is the object shadowing itself.
     Params dir;
     dir.set("direction", Params::List{-1.0, -0.05, 0.3});
+    std::map<std::string, int> zero_offset_acne;
     for (float scale : {1e-4f, 1.0f, 1e5f, 1e6f}) {
         const Point3 centre = scale * Point3(1.0f, 0.5f, -1.0f);
         Params pt;
@@ -303,7 +307,7 @@ TEST_CASE("no shadow acne on a lit sphere and plane from 1e-4 to 1e6", "[whitted
             free.add(shape, lambert(0.7f), {false, false});
             const WhittedIntegrator ws(shadowed, lights), wf(free, lights);
             const Point3 eye = centre + scale * Vec3(0.3f, 3.0f, 2.5f);
-            int lit = 0, darker = 0;
+            int lit = 0, darker = 0, towards_light = 0, spawned_blocked = 0, unoffset_blocked = 0;
             for (int y = 0; y < 64; ++y)
                 for (int x = 0; x < 64; ++x) {
                     const Point3 aim = centre + scale * Vec3((x - 31.5f) / 40.0f, 0.0f, (y - 31.5f) / 40.0f);
@@ -312,12 +316,31 @@ TEST_CASE("no shadow acne on a lit sphere and plane from 1e-4 to 1e6", "[whitted
                     const RGB a = ws.radiance(ray, {}, s), b = wf.radiance(ray, {}, s);
                     if (b.g > 0.0f) ++lit;
                     if (a.g < b.g) ++darker;
+                    // The control: shadow rays to the point light from the hit itself, spawned by
+                    // geometry's routine and not offset at all (what the darker count would see without it).
+                    SurfaceHit h;
+                    if (!shadowed.intersect(ray, h)) continue;
+                    const Normal3 ng =
+                        glm::dot(h.geometric_normal, ray.direction) < 0.0f ? h.geometric_normal : -h.geometric_normal;
+                    const Point3 target = centre + scale * Vec3(1.5f, 2.0f, 1.0f);
+                    if (!(glm::dot(target - h.point, ng) > 0.0f)) continue;
+                    ++towards_light;
+                    spawned_blocked += shadowed.occluded(spawn_ray_to(h, target));
+                    unoffset_blocked += shadowed.occluded(Ray{h.point, target - h.point, 0.0f, 1.0f - kShadowEpsilon});
                 }
-            INFO(name << " at scale " << scale);
+            INFO(name << " at scale " << scale << ": " << towards_light << " hits facing the light, "
+                      << unoffset_blocked << " shadowed by themselves without an offset");
             CHECK(lit > 1000);
             CHECK(darker == 0);
+            CHECK(spawned_blocked == 0);
+            // Without the offset the spheres shadow themselves at every scale (262 to 645 of 1,520 hits).
+            if (name.find("sphere") != std::string::npos) CHECK(unoffset_blocked > 100);
+            zero_offset_acne[name] += unoffset_blocked;
         }
     }
+    // The mesh plane at two of the four scales (260 at 1, 2,464 at 1e5); the quad's own hit test happens
+    // never to find itself again from its hit points.
+    CHECK(zero_offset_acne["mesh plane"] > 100);
 }
 
 TEST_CASE("no NaN or infinity for grazing rays, reversed normals, zero vectors and black lights", "[whitted]") {
@@ -372,6 +395,44 @@ TEST_CASE("no NaN or infinity for grazing rays, reversed normals, zero vectors a
     }
 }
 
+TEST_CASE("a solid texture on an instanced translated sphere shows the pattern of the untranslated one", "[whitted]") {
+    // checker3d with cells of 1/4 glowing on a sphere at the origin, seen straight and through an Instance
+    // moved by T = (8.125, -4, 16): 8.125 is half a cell off the grid, so a lookup at the world point would
+    // shift the pattern in x. T and the ray origins are dyadic, so o + T - T is exact and both scenes
+    // intersect the very same object-space rays: every pixel must match bit for bit.
+    const TextureRegistry textures = make_texture_registry();
+    Params cp;
+    cp.set("tiles", 4.0);
+    const std::shared_ptr<Texture> checker = textures.create("checker3d", cp);
+    Params glow;
+    glow.set_object<Texture>("emission", checker);
+    const auto m = lambert(0.0f, glow);
+    const Vec3 T(8.125f, -4.0f, 16.0f);
+    ShapeList plain, moved;
+    plain.add(sphere(Point3(0.0f), 1.0f), m);
+    moved.add(std::make_shared<Instance>(sphere(Point3(0.0f), 1.0f), glm::translate(Mat4(1.0f), T)), m);
+    const WhittedIntegrator wp(plain, {}), wm(moved, {});
+    int hits = 0, differ = 0, world_differ = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const Point3 o((x - 32) / 32.0f, (y - 32) / 32.0f, -4.0f);
+            const Vec3 d(0.125f * (x % 3 - 1), 0.0625f * (y % 5 - 2), 1.0f);
+            RayStats s;
+            const RGB a = wp.radiance(Ray{o, d}, {}, s), b = wm.radiance(Ray{o + T, d}, {}, s);
+            SurfaceHit h;
+            if (!moved.intersect(Ray{o + T, d}, h)) continue;
+            ++hits;
+            if (a != b) ++differ;
+            // The control: what a lookup at the world point would have shown.
+            TextureLookup q;
+            q.point = h.point;
+            if (checker->eval(q) != a) ++world_differ;
+        }
+    CHECK(hits > 2000);
+    CHECK(differ == 0);
+    CHECK(world_differ > hits / 4);
+}
+
 TEST_CASE("smooth normals never send reflected or refracted rays to the wrong side of the true surface", "[whitted]") {
     // A coarse icosphere with vertex normals: the shading normal differs from the facet's by up to ~20
     // degrees. A mirror in an environment that is black below y = 0: a reflected ray that started inside
@@ -399,6 +460,75 @@ TEST_CASE("smooth normals never send reflected or refracted rays to the wrong si
     }
     CHECK(hits > 1000);
     CHECK(wrong == 0);
+}
+
+TEST_CASE("smooth normals never refract into or out of a mesh on the wrong side of the true surface", "[whitted]") {
+    // The coarse smooth icosphere in clear glass (kt 1, no kr, no Fresnel), one refraction deep, in the
+    // direction environment; its vertex normals lean up to 37 degrees off the facets'.
+    // Entering: the ray must go into the mesh, meet the far wall at the depth limit and be black; one left
+    // outside would escape and show the environment. (With n_s . n_g > 0 an entering refraction cannot
+    // rise above the facet: it is d eta + k n_s with k < 0; the leaks are on the way out.)
+    // Leaving, at index 1.05 (critical angle 72 degrees), from eyes inside: where the shading normal lets
+    // the ray out, it must leave above the facet it hits and show the environment in a direction outside
+    // it; total internal reflection stays inside and is black. The test counts the rays whose uncorrected
+    // direction, refract(d, n_s, 1.05), points back into the mesh, so it is known to exercise the correction.
+    auto mesh = std::make_shared<TriangleMesh>(test::icosphere(0));
+    mesh->normals = mesh->positions;
+    WhittedOptions o;
+    o.environment = std::make_shared<DirectionTexture>();
+    o.max_depth = 1;
+    auto glass = [&](double ior, ShapeList& scene) {
+        Params clear;
+        clear.set("kr", 0.0).set("kt", 1.0).set("fresnel", false).set("ior", ior);
+        scene.add(std::make_shared<MeshShape>(mesh), material("glass", clear));
+    };
+
+    ShapeList dense;
+    glass(1.5, dense);
+    const WhittedIntegrator wd(dense, {}, o);
+    int entering = 0, entering_wrong = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Point3 eye = 4.0f * spiral(i, 4000);
+        const Vec3 d = glm::normalize(spiral((i * 61) % 4000, 4000) * 0.8f - eye);
+        SurfaceHit h;
+        if (!dense.intersect(Ray{eye, d}, h)) continue;
+        ++entering;
+        RayStats stats;
+        if (!wd.radiance(Ray{eye, d}, {}, stats).is_black()) ++entering_wrong;
+    }
+    CHECK(entering > 1000);
+    CHECK(entering_wrong == 0);
+
+    ShapeList thin;
+    glass(1.05, thin);
+    const WhittedIntegrator wt(thin, {}, o);
+    int leaving = 0, leaving_wrong = 0, would_leak = 0, tir = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Point3 eye = 0.78f * spiral((i * 17) % 4000, 4000);
+        const Vec3 d = glm::normalize(spiral(i, 4000));
+        SurfaceHit h;
+        REQUIRE(thin.intersect(Ray{eye, d}, h));
+        ++leaving;
+        // The integrator turns the normals towards the viewer (inwards here) and refracts with 1.05 / 1.
+        Normal3 ns = -h.shading_normal;
+        if (!(glm::dot(ns, -d) > 0.0f)) ns = -h.geometric_normal;
+        const auto t = refract(d, ns, 1.05f);
+        RayStats stats;
+        const RGB L = wt.radiance(Ray{eye, d}, {}, stats);
+        if (!t) {
+            ++tir;
+            if (!L.is_black()) ++leaving_wrong;  // reflected inside: meets the wall at the depth limit
+            continue;
+        }
+        if (glm::dot(*t, h.geometric_normal) <= 0.0f) ++would_leak;
+        const Vec3 r(2.0f * L.r - 1.0f, 2.0f * L.g - 1.0f, 2.0f * L.b - 1.0f);
+        if (L.is_black() || glm::dot(r, h.geometric_normal) <= 0.0f) ++leaving_wrong;
+    }
+    INFO("entering " << entering << ", leaving " << leaving << " (uncorrected back inside " << would_leak
+                     << ", total internal reflection " << tir << ")");
+    CHECK(would_leak > 20);
+    CHECK(tir > 20);
+    CHECK(leaving_wrong == 0);
 }
 
 TEST_CASE("area light samples are a pure function of the sample key", "[whitted]") {
@@ -436,4 +566,71 @@ TEST_CASE("escaping rays see the cube map in their direction, through a mirror t
     // Straight into the mirror: back along +z.
     CHECK(w.radiance(Ray{Point3(0.0f), Vec3(0, 0, -1)}, {}, s).g == Approx(0.5f));
     CHECK(s.reflected == 1);
+}
+
+TEST_CASE("a cook-torrance floor under a hand-placed light gives the BRDF times cos times I over r^2", "[whitted]") {
+    // Floor y = 0 seen at the origin from (0, 1, -3); a point light of intensity 7 at (1.2, 2, 0.5). Physical:
+    // f(wo, wi) cos(theta_i) 7 / r^2 in any local frame with n = +y (the lobe is isotropic).
+    const Point3 light_at(1.2f, 2.0f, 0.5f), eye(0.0f, 1.0f, -3.0f);
+    for (const char* metal : {"gold", "none"}) {
+        Params p;
+        p.set("kd", 0.2).set("roughness", 0.5);
+        if (std::string(metal) != "none") p.set("metal", std::string(metal));
+        ShapeList scene;
+        scene.add(quad(Point3(-5, 0, -5), Vec3(0, 0, 10), Vec3(10, 0, 0)), material("cook-torrance", p));
+        for (Convention c : {Convention::physical, Convention::classic}) {
+            WhittedOptions o;
+            o.convention = c;
+            const WhittedIntegrator w(scene, {point_light(light_at, 7.0f)}, o);
+            RayStats s;
+            const RGB L = w.radiance(Ray{eye, Point3(0.0f) - eye}, {}, s);
+            const Frame f = Frame::from_normal(Normal3(0, 1, 0));
+            const Vec3 wo = f.to_local(glm::normalize(eye)), wi = f.to_local(glm::normalize(light_at));
+            const Fresnel fresnel =
+                std::string(metal) == "gold" ? Fresnel::conductor(kGold) : Fresnel::dielectric(1.5f);
+            const CookTorranceBrdf brdf(RGB(0.2f), RGB(1.0f),
+                                        MicrofacetDistribution::from_roughness(MicrofacetModel::ggx, 0.5f), fresnel);
+            const float r2 = glm::dot(light_at, light_at);
+            const RGB expected = c == Convention::physical ? brdf.eval(wo, wi) * wi.z * (7.0f / r2)
+                                                           : brdf.eval(wo, wi) * wi.z * kPi * 7.0f;
+            INFO(metal << (c == Convention::physical ? " physical" : " classic"));
+            CHECK(L.r == Approx(expected.r).epsilon(1e-5));
+            CHECK(L.g == Approx(expected.g).epsilon(1e-5));
+            CHECK(L.b == Approx(expected.b).epsilon(1e-5));
+            CHECK(s.shadow == 1);
+        }
+    }
+}
+
+TEST_CASE("an ashikhmin-shirley highlight is elongated along the surface tangent and turns with it", "[whitted]") {
+    // A floor seen from above with the light at the eye: at a floor point offset by x the half vector
+    // tilts towards x. nu = 10 along the tangent, nv = 2000 across: the highlight stretches along the
+    // tangent. Two floors, tangent (edge_u) along x and along z: the long axis follows.
+    Params p;
+    p.set("rd", 0.0).set("rs", 0.5).set("nu", 10.0).set("nv", 2000.0);
+    const auto m = material("ashikhmin-shirley", p);
+    const Point3 eye(0.0f, 2.0f, 0.0f);
+    auto extent = [&](const Point3& corner, const Vec3& edge_u, const Vec3& edge_v, const Vec3& along) {
+        ShapeList scene;
+        scene.add(quad(corner, edge_u, edge_v), m);
+        const WhittedIntegrator w(scene, {point_light(eye, 4.0f)});
+        RayStats s;
+        const float peak = w.radiance(Ray{eye, Vec3(0, -1, 0)}, {}, s).g;
+        int above_half = 0;
+        for (int i = -200; i <= 200; ++i) {
+            const Point3 target = (static_cast<float>(i) / 100.0f) * along;
+            above_half += w.radiance(Ray{eye, target - eye}, {}, s).g > 0.5f * peak;
+        }
+        return above_half;
+    };
+    // edge_u x edge_v faces up (+y) in both: x cross -z and z cross x.
+    const Vec3 x(10, 0, 0), z(0, 0, 10), ax(1, 0, 0), az(0, 0, 1);
+    const int tx_along_x = extent(Point3(-5, 0, 5), x, -z, ax), tx_along_z = extent(Point3(-5, 0, 5), x, -z, az);
+    const int tz_along_x = extent(Point3(-5, 0, -5), z, x, ax), tz_along_z = extent(Point3(-5, 0, -5), z, x, az);
+    INFO("tangent x: " << tx_along_x << " along x, " << tx_along_z << " along z; tangent z: " << tz_along_x
+                       << " along x, " << tz_along_z << " along z");
+    CHECK(tx_along_z >= 1);
+    CHECK(tx_along_x > 5 * tx_along_z);
+    CHECK(tz_along_z > 5 * tz_along_x);
+    CHECK(std::abs(tx_along_x - tz_along_z) <= 2);
 }

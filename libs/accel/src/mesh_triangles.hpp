@@ -2,7 +2,7 @@
 // A mesh's triangles laid out for one triangle test, and the per-triangle test every accelerator's
 // leaves call (private to the accel library).
 #include <rtlab/accel/accelerator.hpp>
-#include <rtlab/accel/box_ray.hpp>
+#include <rtlab/core/box_ray.hpp>
 #include <rtlab/geometry/triangle_intersect.hpp>
 #include <rtlab/geometry/triangle_mesh.hpp>
 

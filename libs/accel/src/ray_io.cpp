@@ -9,10 +9,11 @@
 namespace rtlab {
 
 namespace {
-static_assert(std::endian::native == std::endian::little, "ray and hit files are little-endian");
+static_assert(std::endian::native == std::endian::little, "ray, hit and spawn files are little-endian");
 
 constexpr char kRayMagic[8] = {'R', 'T', 'R', 'A', 'Y', 'S', '0', '1'};
 constexpr char kHitMagic[8] = {'R', 'T', 'H', 'I', 'T', 'S', '0', '1'};
+constexpr char kSpawnMagic[8] = {'R', 'T', 'S', 'P', 'A', 'W', 'N', '1'};
 
 template <class T>
 void append(std::vector<unsigned char>& out, const T& value) {
@@ -23,16 +24,19 @@ void append(std::vector<unsigned char>& out, const T& value) {
 // Checks magic and size, returns the record count.
 std::uint64_t check_header(const std::vector<unsigned char>& bytes, const char (&magic)[8], std::size_t record,
                            const std::filesystem::path& path, const char* kind) {
-    if (bytes.size() < 16) throw Error(file_error_message(path, std::string(kind) + " file shorter than its 16-byte header"));
+    if (bytes.size() < 16)
+        throw Error(file_error_message(path, std::string(kind) + " file shorter than its 16-byte header"));
     if (std::memcmp(bytes.data(), magic, 8) != 0)
-        throw Error(file_error_message(path, std::string("not a ") + kind + " file (magic is not '" + std::string(magic, 8) + "')"));
+        throw Error(file_error_message(
+            path, std::string("not a ") + kind + " file (magic is not '" + std::string(magic, 8) + "')"));
     std::uint64_t count;
     std::memcpy(&count, bytes.data() + 8, 8);
     const std::uint64_t payload = bytes.size() - 16;
     if (count > payload / record || payload != count * record)
         throw Error(file_error_message(path, std::string(kind) + " file of " + std::to_string(bytes.size()) +
                                                  " bytes does not hold the " + std::to_string(count) +
-                                                 " records its header claims (16 + " + std::to_string(record) + " N bytes)"));
+                                                 " records its header claims (16 + " + std::to_string(record) +
+                                                 " N bytes)"));
     return count;
 }
 }  // namespace
@@ -54,7 +58,8 @@ void write_ray_file(const std::filesystem::path& path, std::span<const Ray> rays
     out.reserve(16 + 32 * rays.size());
     append(out, static_cast<std::uint64_t>(rays.size()));
     for (const Ray& r : rays) {
-        const float f[8] = {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z, r.tmin, r.tmax};
+        const float f[8] = {r.origin.x,    r.origin.y,    r.origin.z, r.direction.x,
+                            r.direction.y, r.direction.z, r.tmin,     r.tmax};
         append(out, f);
     }
     write_binary_file(path, out);
@@ -86,6 +91,22 @@ std::vector<MeshHit> read_hit_file(const std::filesystem::path& path) {
         std::memcpy(&hits[i].v, p + 12, 4);
     }
     return hits;
+}
+
+std::vector<std::int32_t> read_spawn_file(const std::filesystem::path& path) {
+    const auto bytes = read_binary_file(path);
+    const std::uint64_t n = check_header(bytes, kSpawnMagic, 4, path, "spawn");
+    std::vector<std::int32_t> triangles(n);
+    if (n > 0) std::memcpy(triangles.data(), bytes.data() + 16, 4 * n);
+    return triangles;
+}
+
+void write_spawn_file(const std::filesystem::path& path, std::span<const std::int32_t> triangles) {
+    std::vector<unsigned char> out(kSpawnMagic, kSpawnMagic + 8);
+    out.reserve(16 + 4 * triangles.size());
+    append(out, static_cast<std::uint64_t>(triangles.size()));
+    for (const std::int32_t t : triangles) append(out, t);
+    write_binary_file(path, out);
 }
 
 }  // namespace rtlab

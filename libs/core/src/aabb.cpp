@@ -1,5 +1,7 @@
 #include <rtlab/core/aabb.hpp>
+#include <rtlab/core/box_ray.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rtlab {
@@ -15,29 +17,16 @@ bool AABB::contains(const Point3& p) const {
 }
 
 std::optional<Interval> AABB::intersect(const Ray& ray) const {
+    // BoxRay ignores a NaN distance, so a NaN or infinite ray must be refused before it gets there.
     if (is_empty() || !is_finite(ray.origin) || !is_finite(ray.direction)) return std::nullopt;
-    float t0 = ray.tmin;
-    float t1 = ray.tmax;
-    if (!(t0 <= t1)) return std::nullopt;  // also rejects a NaN tmin or tmax
-    constexpr float far_scale = 1.0f + 2.0f * gamma_bound(3);
-    for (int a = 0; a < 3; ++a) {
-        const float o = ray.origin[a];
-        const float d = ray.direction[a];
-        if (d == 0.0f) {  // +0 and -0: the ray runs inside the slab or never enters it
-            if (o < lo[a] || o > hi[a]) return std::nullopt;
-            continue;
-        }
-        // Division rather than multiplication by 1/d: a denormal d would make 1/d infinite and
-        // (lo - o) * inf a NaN when the origin lies on the slab plane.
-        float t_near = (lo[a] - o) / d;
-        float t_far = (hi[a] - o) / d;
-        if (t_near > t_far) std::swap(t_near, t_far);
-        t_far *= far_scale;
-        t0 = t_near > t0 ? t_near : t0;
-        t1 = t_far < t1 ? t_far : t1;
-        if (t0 > t1) return std::nullopt;
-    }
-    return Interval{t0, t1};
+    if (!(ray.tmin <= ray.tmax)) return std::nullopt;  // also rejects a NaN tmin or tmax
+    float t0 = 0.0f, t1 = 0.0f;
+    if (!BoxRay(ray).clip(*this, ray.tmax, t0, t1)) return std::nullopt;
+    // clip enlarges its limit for conservative tree traversal; this range ends at tmax. A zero direction
+    // component outside its slab gives an entry at +inf or an exit at -inf, which clip accepts only when
+    // nothing finite bounds the range (a zero direction, or tmin = -inf): still a miss.
+    if (t0 > ray.tmax || t0 == kInfinity || t1 == -kInfinity) return std::nullopt;
+    return Interval{t0, std::min(t1, ray.tmax)};
 }
 
 }  // namespace rtlab

@@ -6,12 +6,15 @@
 
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <string_view>
-#include <vector>
+#include <cstdint>
+#include <limits>
 #include <string>
+#include <string_view>
 #include <unordered_map>
+#include <vector>
 
 namespace rtlab {
 
@@ -30,34 +33,141 @@ struct CornerKeyHash {
     }
 };
 
-// tinyobjloader reads "nan", "inf" and malformed numbers in vertex lines as 0 without a word, so vertex
-// lines are checked here first, which also gives the line number for the error.
-void check_vertex_lines(const std::filesystem::path& path) {
-    const std::vector<unsigned char> bytes = read_binary_file(path);
-    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+// Calls f(line, line_number) for every line as tinyobjloader splits them (at \n, \r\n or a lone \r), cut at
+// a NUL as its C-string parsing is, with leading blanks dropped as it drops them.
+template <class F>
+void for_each_line(std::string_view text, F&& f) {
     std::size_t line_no = 0, pos = 0;
     while (pos < text.size()) {
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) end = text.size();
+        std::size_t end = pos;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
         std::string_view line = text.substr(pos, end - pos);
-        ++line_no;
-        pos = end + 1;
-        if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
-        std::size_t i = 1;
-        for (int k = 0; k < 3; ++k) {
-            while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-            std::size_t stop = i;
-            while (stop < line.size() && line[stop] != ' ' && line[stop] != '\t' && line[stop] != '\r') ++stop;
-            double value = 0.0;
-            const char* first = line.data() + i;
-            if (i < stop && *first == '+') ++first;
-            const auto [p, ec] = std::from_chars(first, line.data() + stop, value);
-            if (i == stop || ec != std::errc() || p != line.data() + stop || !std::isfinite(value))
-                throw Error(file_error_message(path, "line " + std::to_string(line_no) + ": vertex coordinate " +
-                                                         std::to_string(k + 1) + " is missing, malformed or non-finite"));
-            i = stop;
-        }
+        pos = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
+        line = line.substr(0, line.find('\0'));
+        const std::size_t first = line.find_first_not_of(" \t");
+        f(first == std::string_view::npos ? std::string_view() : line.substr(first), ++line_no);
     }
+}
+
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
+// Whether line is a statement of this keyword ("v", "vt", "vn", "f"): the keyword, then a blank.
+bool starts_statement(std::string_view line, std::string_view keyword) {
+    return line.size() > keyword.size() && line.substr(0, keyword.size()) == keyword && is_blank(line[keyword.size()]);
+}
+
+// The next blank-separated word of line from pos on (empty at its end); pos moves past it.
+std::string_view next_word(std::string_view line, std::size_t& pos) {
+    while (pos < line.size() && is_blank(line[pos])) ++pos;
+    const std::size_t start = pos;
+    while (pos < line.size() && !is_blank(line[pos])) ++pos;
+    return line.substr(start, pos - start);
+}
+
+// Throws the error for one line of the file.
+struct LineError {
+    const std::filesystem::path& path;
+    std::size_t line;
+    [[noreturn]] void operator()(const std::string& what) const {
+        throw Error(file_error_message(path, "line " + std::to_string(line) + ": " + what));
+    }
+};
+
+// "v x y z": tinyobjloader reads "nan", "inf" and malformed numbers as 0 without a word.
+void check_vertex(std::string_view line, const LineError& fail) {
+    std::size_t pos = 1;
+    for (std::size_t k = 0; k < 3; ++k) {
+        double value = 0.0;
+        std::string_view w = next_word(line, pos);
+        bool ok = !w.empty();
+        if (ok) {
+            if (w.front() == '+') w.remove_prefix(1);
+            const auto [p, ec] = std::from_chars(w.data(), w.data() + w.size(), value);
+            ok = !w.empty() && ec == std::errc() && p == w.data() + w.size() && std::isfinite(value);
+        }
+        if (!ok) fail("vertex coordinate " + std::to_string(k + 1) + " is missing, malformed or non-finite");
+    }
+}
+
+struct IndexedKind {
+    const char* name;    // "vertex"
+    const char* plural;  // "vertices"
+};
+constexpr IndexedKind kVertex{"vertex", "vertices"}, kUv{"texture coordinate", "texture coordinates"},
+    kNormal{"normal", "normals"};
+
+struct ElementCounts {
+    std::int64_t positions = 0, uvs = 0, normals = 0;
+};
+
+// One index of a face corner, already known to be [+-]digits. Positive indices count from the file's first
+// element of the kind, up to the file's last (tinyobjloader accepts forward references); negative ones back
+// from the last read before this line. tinyobjloader reads them with atoi, which wraps an index too large for
+// an int around to any other, so the digits are read here in 64 bits and checked against both limits.
+void check_index(std::string_view text, std::int64_t so_far, std::int64_t total, const IndexedKind& kind,
+                 const LineError& fail) {
+    const bool negative = text.front() == '-';
+    const std::string_view digits = text.substr(text.front() == '-' || text.front() == '+' ? 1 : 0);
+    std::int64_t magnitude = 0;
+    const auto [p, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), magnitude);
+    const bool huge = ec == std::errc::result_out_of_range || magnitude > std::numeric_limits<int>::max();
+    auto what = [&] { return std::string(kind.name) + " index " + std::string(text); };
+    if (!huge && magnitude == 0) fail(what() + ": OBJ indices start at 1");
+    if (!negative && (huge || magnitude > total))
+        fail(what() + " out of range (" + std::to_string(total) + " " + kind.plural + ")");
+    if (negative && (huge || magnitude > so_far))
+        fail(what() + " reaches before the first " + kind.name + " (" + std::to_string(so_far) + " " + kind.plural +
+             " so far)");
+}
+
+bool is_index(std::string_view s) {
+    if (!s.empty() && (s.front() == '-' || s.front() == '+')) s.remove_prefix(1);
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// "f c1 c2 ...", each corner v, v/vt, v//vn or v/vt/vn.
+void check_face(std::string_view line, const ElementCounts& so_far, const ElementCounts& total, const LineError& fail) {
+    std::size_t pos = 1;
+    for (std::string_view corner = next_word(line, pos); !corner.empty(); corner = next_word(line, pos)) {
+        const auto n = 1 + static_cast<std::size_t>(std::count(corner.begin(), corner.end(), '/'));
+        std::string_view slot[3];  // v, vt, vn
+        for (std::size_t k = 0, start = 0; k < n && k < 3; ++k) {
+            const std::size_t slash = corner.find('/', start);
+            slot[k] = corner.substr(start, slash == std::string_view::npos ? slash : slash - start);
+            start = slash + 1;
+        }
+        const bool well_formed = n <= 3 && is_index(slot[0]) &&
+                                 (n < 2 || is_index(slot[1]) || (n == 3 && slot[1].empty())) &&
+                                 (n < 3 || is_index(slot[2]));
+        if (!well_formed)
+            fail("face corner '" + std::string(corner) +
+                 "' is malformed (v, v/vt, v//vn or v/vt/vn with integer indices)");
+        check_index(slot[0], so_far.positions, total.positions, kVertex, fail);
+        if (n >= 2 && !slot[1].empty()) check_index(slot[1], so_far.uvs, total.uvs, kUv, fail);
+        if (n == 3) check_index(slot[2], so_far.normals, total.normals, kNormal, fail);
+    }
+}
+
+// The vertex and face lines tinyobjloader will read, checked first, which also gives the line number for the
+// error.
+void check_lines(const std::filesystem::path& path) {
+    const std::vector<unsigned char> bytes = read_binary_file(path);
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    auto count = [](ElementCounts& counts, std::string_view line) {
+        if (starts_statement(line, "v"))
+            ++counts.positions;
+        else if (starts_statement(line, "vt"))
+            ++counts.uvs;
+        else if (starts_statement(line, "vn"))
+            ++counts.normals;
+    };
+    ElementCounts total, so_far;
+    for_each_line(text, [&](std::string_view line, std::size_t) { count(total, line); });
+    for_each_line(text, [&](std::string_view line, std::size_t line_no) {
+        const LineError fail{path, line_no};
+        if (starts_statement(line, "v")) check_vertex(line, fail);
+        if (starts_statement(line, "f")) check_face(line, so_far, total, fail);
+        count(so_far, line);
+    });
 }
 
 }  // namespace
@@ -69,7 +179,7 @@ TriangleMesh load_obj(const std::filesystem::path& path, MeshLoadInfo* info) {
     if (!std::filesystem::exists(path, ec)) fail("no such file");
     if (std::filesystem::file_size(path, ec) == 0) fail("empty file");
 
-    check_vertex_lines(path);
+    check_lines(path);
 
     tinyobj::ObjReaderConfig config;
     config.triangulate = false;

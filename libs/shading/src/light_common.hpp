@@ -1,6 +1,6 @@
 #pragma once
 // Helpers shared by the built-in lights (private to the shading library).
-#include "shading_params.hpp"
+#include "builtin_params.hpp"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/shading/material.hpp>
 
-#include "shading_params.hpp"
+#include <rtlab/textures/texture_param.hpp>
 
 #include <algorithm>
 
@@ -17,7 +17,7 @@ RGB clamp_rgb(const RGB& c, float limit) {
 
 Material::Term Material::make_term(const std::shared_ptr<const Texture>& texture, const RGB& fallback) {
     if (!texture) return {nullptr, fallback};
-    if (const RGB* c = shading_detail::constant_of(*texture)) return {nullptr, *c};
+    if (const RGB* c = texture->constant()) return {nullptr, *c};
     return {texture.get(), RGB{}};
 }
 
@@ -33,12 +33,14 @@ Material::Material(Whitted whitted) : m_whitted(std::move(whitted)) {
     m_emission = make_term(m_whitted.emission, RGB(0.0f));
     m_opacity = make_term(m_whitted.opacity, RGB(1.0f));
     const bool kt_zero = !m_kt.texture && m_kt.value.is_black();
-    const bool opaque = !m_opacity.texture && m_opacity.value.g >= 1.0f;
+    const bool opaque = !m_opacity.texture && scalar(m_opacity.value) >= 1.0f;
     m_transmits = !(kt_zero && opaque);
 }
 
 float Material::opacity(const TextureLookup& lookup) const {
-    const float a = m_opacity.texture ? shading_detail::texture_alpha(*m_opacity.texture, lookup) : m_opacity.value.g;
+    // The textures library's rule: the alpha of a texture that has one (an RGBA image: Saturn's rings), else
+    // the mean of its channels (a grey mask, a constant).
+    const float a = m_opacity.texture ? rtlab::opacity(*m_opacity.texture, lookup) : scalar(m_opacity.value);
     return a == a ? std::clamp(a, 0.0f, 1.0f) : 1.0f;  // a NaN alpha counts as opaque
 }
 

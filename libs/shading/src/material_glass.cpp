@@ -5,10 +5,10 @@
 //   kt        transmission colour or texture (tinted glass)              default 1
 //   ior       index of refraction inside                                 default 1.5
 //   fresnel   weight kr by F and kt by 1 - F                             default true
-//   + the other Whitted terms (shading_params.cpp: kWhittedDoc): ior_outside (a glass shell around air is
+//   + the other Whitted terms (builtin_params.cpp: kWhittedDoc): ior_outside (a glass shell around air is
 //   an inner surface with ior 1 and ior_outside 1.5, or a reversed one), absorption (Beer-Lambert).
 // Under total internal reflection the transmitted share goes to reflection. No direct light of its own.
-#include "shading_params.hpp"
+#include "builtin_params.hpp"
 
 namespace rtlab::shading_detail {
 

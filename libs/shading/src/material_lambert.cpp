@@ -2,12 +2,12 @@
 //
 // Parameters
 //   albedo   diffuse reflectance, colour or texture                      default 0.5
-//   + the Whitted terms of every material (shading_params.cpp: kWhittedDoc)
+//   + the Whitted terms of every material (builtin_params.cpp: kWhittedDoc)
 //
 // physical: albedo / pi cos(theta_i); classic: albedo cos(theta_i).
 #include <rtlab/shading/brdf.hpp>
 
-#include "shading_params.hpp"
+#include "builtin_params.hpp"
 
 namespace rtlab::shading_detail {
 
@@ -26,7 +26,7 @@ protected:
     void local_terms(const TextureLookup& q, SurfaceTerms& t) const override { t.diffuse = m_albedo.eval(q); }
 
 private:
-    Channel m_albedo;
+    ColourChannel m_albedo;
 };
 }  // namespace
 
@@ -34,7 +34,7 @@ void register_lambert(MaterialRegistry& registry) {
     registry.add(
         "lambert",
         [](const Params& p) -> std::shared_ptr<Material> {
-            auto albedo = texture_param(p, "albedo", RGB(0.5f));
+            auto albedo = colour_param(p, "albedo", RGB(0.5f));
             return std::make_shared<LambertMaterial>(read_whitted(p, {}), std::move(albedo));
         },
         std::string("ideal diffuse: albedo / pi (classic: albedo, no pi). albedo: colour or texture (default "

@@ -2,9 +2,9 @@
 //
 // Parameters
 //   kr       mirror reflectance, colour or texture                       default 1
-//   + the other Whitted terms (shading_params.cpp: kWhittedDoc); with fresnel = true and an ior the
+//   + the other Whitted terms (builtin_params.cpp: kWhittedDoc); with fresnel = true and an ior the
 //   reflectance is kr F(theta), a dielectric's reflection without its transmission.
-#include "shading_params.hpp"
+#include "builtin_params.hpp"
 
 namespace rtlab::shading_detail {
 

@@ -4,13 +4,13 @@
 //   kd         diffuse colour or texture                                 default 0.8
 //   ks         specular colour or texture                                default 0.2
 //   exponent   Phong exponent (>= 0), number or texture (grey)           default 25
-//   + the Whitted terms of every material (shading_params.cpp: kWhittedDoc)
+//   + the Whitted terms of every material (builtin_params.cpp: kWhittedDoc)
 //
 // physical: the energy-normalised Phong BRDF (PhongBrdf: kd / pi + ks (e + 2) / (2 pi) cos^e alpha) times
 // cos(theta_i); classic: the course's kd (n.l) + ks (r.v)^e, r the mirror image of the light direction.
 #include <rtlab/shading/brdf.hpp>
 
-#include "shading_params.hpp"
+#include "builtin_params.hpp"
 
 #include <cmath>
 
@@ -21,7 +21,10 @@ class PhongMaterial final : public Material {
 public:
     PhongMaterial(Whitted w, std::shared_ptr<const Texture> kd, std::shared_ptr<const Texture> ks,
                   std::shared_ptr<const Texture> exponent)
-        : Material(std::move(w)), m_kd(std::move(kd)), m_ks(std::move(ks)), m_exponent(std::move(exponent)) {}
+        : Material(std::move(w)),
+          m_kd(std::move(kd)),
+          m_ks(std::move(ks)),
+          m_exponent(std::move(exponent), 0.0f, kMaxExponent, 0.0f) {}
 
     RGB direct(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, Convention c) const override {
         if (!(wo.z > 0.0f && wi.z > 0.0f)) return {};
@@ -35,11 +38,12 @@ protected:
     void local_terms(const TextureLookup& q, SurfaceTerms& t) const override {
         t.diffuse = m_kd.eval(q);
         t.specular = m_ks.eval(q);
-        t.shape_u = std::max(0.0f, m_exponent.eval(q).g);
+        t.shape_u = m_exponent.eval(q);
     }
 
 private:
-    Channel m_kd, m_ks, m_exponent;
+    ColourChannel m_kd, m_ks;
+    ScalarChannel m_exponent;
 };
 }  // namespace
 
@@ -47,10 +51,9 @@ void register_phong(MaterialRegistry& registry) {
     registry.add(
         "phong",
         [](const Params& p) -> std::shared_ptr<Material> {
-            auto kd = texture_param(p, "kd", RGB(0.8f));
-            auto ks = texture_param(p, "ks", RGB(0.2f));
-            auto e = texture_param(p, "exponent", RGB(25.0f));
-            if (const RGB* c = constant_of(*e); c && !(c->g >= 0.0f)) fail_param(p, "exponent", "must be >= 0");
+            auto kd = colour_param(p, "kd", RGB(0.8f));
+            auto ks = colour_param(p, "ks", RGB(0.2f));
+            auto e = scalar_param(p, "exponent", 25.0f, 0.0f, kMaxExponent);
             return std::make_shared<PhongMaterial>(read_whitted(p, {}), std::move(kd), std::move(ks), std::move(e));
         },
         std::string("Phong: physical kd / pi + ks (e + 2) / (2 pi) cos^e alpha; classic kd (n.l) + ks (r.v)^e. "

@@ -1,7 +1,7 @@
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>
 
-#include "shading_params.hpp"
+#include "builtin_params.hpp"
 
 namespace rtlab {
 
@@ -9,6 +9,8 @@ void register_builtins(MaterialRegistry& registry) {
     shading_detail::register_lambert(registry);
     shading_detail::register_phong(registry);
     shading_detail::register_blinn_phong(registry);
+    shading_detail::register_cook_torrance(registry);
+    shading_detail::register_ashikhmin_shirley(registry);
     shading_detail::register_mirror(registry);
     shading_detail::register_glass(registry);
 }

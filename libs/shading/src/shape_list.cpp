@@ -22,9 +22,7 @@ bool ShapeList::closest(const Ray& ray, SurfaceHit& hit, Filter filter) const {
         if (filter == Filter::transmissive && !(e.flags.casts_shadows && e.material->transmits_shadows())) continue;
         if (e.shape->intersect(r, hit)) {
             found = true;
-            r.tmax = hit.t;
-            // An Instance reports the shape inside it; the list knows objects by their outermost shape.
-            hit.shape = e.shape.get();
+            r.tmax = hit.t;  // hit.shape is e.shape: every shape, an Instance included, reports itself
         }
     }
     return found;

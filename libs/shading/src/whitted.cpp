@@ -1,17 +1,12 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/core/frame.hpp>
+#include <rtlab/geometry/spawn.hpp>
 #include <rtlab/shading/optics.hpp>
 #include <rtlab/shading/whitted.hpp>
-
-#include "spawn_shim.hpp"
 
 #include <cmath>
 
 namespace rtlab {
-
-using shading_detail::object_point;
-using shading_detail::spawn_ray;
-using shading_detail::spawn_ray_to;
 
 namespace {
 
@@ -74,7 +69,7 @@ RGB WhittedIntegrator::transmittance(const SurfaceHit& from, const LightSample& 
         const SurfaceInfo info = m_scene.surface(h);
         TextureLookup q;
         q.uv = h.uv;
-        q.point = object_point(h);
+        q.point = h.object_point;  // solid textures in object space, also through instances
         q.direction = ray.direction;
         RGB c = info.material->shadow_transmittance(q);
         const RGB& sigma = info.material->absorption();
@@ -116,7 +111,7 @@ RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, in
 
     TextureLookup q;
     q.uv = hit.uv;
-    q.point = object_point(hit);
+    q.point = hit.object_point;
     q.direction = d;
     const SurfaceTerms t = material.terms(q);
 

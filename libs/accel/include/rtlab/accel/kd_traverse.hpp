@@ -1,7 +1,7 @@
 #pragma once
 /// \brief The one kd-tree traversal: iterative, fixed stack, near child first, any-hit or closest-hit.
-#include <rtlab/accel/box_ray.hpp>
 #include <rtlab/accel/kd_node.hpp>
+#include <rtlab/core/box_ray.hpp>
 #include <rtlab/core/ray.hpp>
 
 #include <cstdint>

@@ -31,10 +31,12 @@ struct AABB {
 
     /// Parameter range where the ray is inside the box, clipped to [ray.tmin, ray.tmax]; nullopt on a miss.
     ///
-    /// Exact where the naive slab test is not: a direction component of +0, -0 or a denormal does not
-    /// produce 0 * inf = NaN (such an axis constrains nothing when the origin is within the slab, and
-    /// rejects when it is outside); the far distance is enlarged by 2 gamma(3) (Ize 2013) so rounding
-    /// never drops a true hit; and any NaN in the ray is a miss, never a hit.
+    /// The slab test is BoxRay's (rtlab/core/box_ray.hpp), the one the accel trees use, so a box and a
+    /// tree never disagree about a ray. Exact where the naive slab test is not: a direction component of
+    /// +0, -0 or a denormal constrains nothing when the origin is within the slab or on its planes, and
+    /// rejects when it is outside; the far distance is enlarged by 2 gamma(3) (Ize 2013) so rounding never
+    /// drops a true hit; and any NaN or infinity in the ray, an empty box, tmin > tmax or an entry at
+    /// infinity is a miss.
     std::optional<Interval> intersect(const Ray& ray) const;
 };
 

@@ -35,7 +35,8 @@ struct SurfaceTerms {
 /// Every material carries the Whitted terms: kr (mirror reflection), kt (transmission), the indices of
 /// refraction inside and outside (a hollow glass shell holds air: an inner surface with inside 1, outside
 /// 1.5, or a reversed one), Fresnel weighting of kr and kt, an emission colour, an opacity (cut-outs; shadow
-/// rays see it too) and a Beer-Lambert absorption coefficient for the medium inside.
+/// rays see it too; rtlab::opacity() of texture_param.hpp: a texture's alpha when it has one, else its
+/// channel mean) and a Beer-Lambert absorption coefficient for the medium inside.
 class Material {
 public:
     /// The Whitted terms every material shares (textures are looked up in terms()).
@@ -91,8 +92,9 @@ private:
 
 using MaterialRegistry = Registry<Material>;
 
-/// Registers lambert, phong, blinn-phong, mirror and glass. Each doc() lists the parameters; the Whitted
-/// parameters (kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption) are accepted by all.
+/// Registers lambert, phong, blinn-phong, cook-torrance, ashikhmin-shirley, mirror and glass. Each doc() lists the
+/// parameters; the Whitted parameters (kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption) are accepted
+/// by all.
 void register_builtins(MaterialRegistry& registry);
 
 /// A registry with category "material" and every built-in registered.

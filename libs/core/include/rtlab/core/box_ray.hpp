@@ -1,6 +1,6 @@
 #pragma once
-/// \brief The slab test every tree in accel uses against its boxes, with the ray's inverse direction and
-/// signs computed once.
+/// \brief The one ray/box slab test: AABB::intersect and every tree in accel use it, with the ray's inverse
+/// direction and signs computed once.
 #include <rtlab/core/aabb.hpp>
 #include <rtlab/core/math.hpp>
 #include <rtlab/core/ray.hpp>

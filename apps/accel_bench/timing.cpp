@@ -1,0 +1,87 @@
+#include "timing.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+namespace rtlab::accel_app {
+
+namespace {
+
+// One pass: every ray traced, each answer written to its record, in parallel blocks.
+void trace_closest(const TriangleAccelerator& accel, const std::vector<Ray>& rays, std::vector<MeshHit>& out) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 1024),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                              MeshHit h;
+                              out[i] = accel.intersect(rays[i], h) ? h : MeshHit{};
+                          }
+                      });
+}
+
+void trace_any(const TriangleAccelerator& accel, const std::vector<Ray>& rays, std::vector<unsigned char>& out) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 1024),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) out[i] = accel.occluded(rays[i]) ? 1 : 0;
+                      });
+}
+
+}  // namespace
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::vector<Built> build_methods(const std::vector<std::string>& methods, const TriangleMesh& mesh,
+                                 const BuildOptions& options, int runs, tbb::task_arena& arena) {
+    std::vector<Built> built;
+    for (const auto& method : methods) {
+        Built b;
+        b.method = method;
+        std::vector<double> build_times;
+        const int build_runs = (method == "brute" || method == "kd-sah-naive") ? 1 : runs;
+        for (int k = 0; k < build_runs; ++k) {
+            const auto start = Clock::now();
+            arena.execute([&] { b.accel = make_accelerator(method, mesh, options); });
+            build_times.push_back(seconds_since(start));
+        }
+        b.build_s = median(build_times);
+        built.push_back(std::move(b));
+    }
+    return built;
+}
+
+// The methods take turns within each round: a slow spell of these shared machines then falls on all of them
+// alike, and the ratios between methods of one run hold even when the absolute figures drift.
+std::vector<Traced> trace_in_rounds(const std::vector<Built>& built, const std::vector<Ray>& rays,
+                                    const std::vector<Ray>& sampled, int runs, tbb::task_arena& arena) {
+    std::vector<Traced> traced(built.size());
+    for (std::size_t m = 0; m < built.size(); ++m) {
+        // Brute force traces only the reference sample: a full pass would take hours.
+        traced[m].rays = built[m].method == "brute" ? &sampled : &rays;
+        traced[m].hits.resize(traced[m].rays->size());
+        traced[m].blocked.resize(traced[m].rays->size());
+    }
+    arena.execute([&] {
+        for (int round = -1; round < runs; ++round) {  // round -1: the untimed warm-up
+            for (std::size_t m = 0; m < built.size(); ++m) {
+                Traced& t = traced[m];
+                const auto start = Clock::now();
+                trace_closest(*built[m].accel, *t.rays, t.hits);
+                const auto middle = Clock::now();
+                trace_any(*built[m].accel, *t.rays, t.blocked);
+                if (round < 0) continue;
+                t.closest_s.push_back(std::chrono::duration<double>(middle - start).count());
+                t.any_s.push_back(seconds_since(middle));
+            }
+        }
+    });
+    return traced;
+}
+
+}  // namespace rtlab::accel_app

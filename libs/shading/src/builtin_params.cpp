@@ -1,0 +1,97 @@
+#include "builtin_params.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace rtlab::shading_detail {
+
+namespace {
+std::string number_text(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
+bool non_negative(const RGB& c) { return c.r >= 0.0f && c.g >= 0.0f && c.b >= 0.0f; }
+}  // namespace
+
+Vec3 finite_vec3(const Params& params, std::string_view name, const Vec3& fallback) {
+    const Vec3 v = params.get_vec3(name, fallback);
+    if (!is_finite(v)) fail_param(params, name, "must be finite");
+    return v;
+}
+
+std::shared_ptr<const Texture> colour_param(const Params& params, std::string_view name, const RGB& fallback) {
+    auto texture = texture_param(params, name, fallback);
+    if (const RGB* c = texture->constant(); c && !non_negative(*c)) fail_param(params, name, "must be >= 0");
+    return texture;
+}
+
+std::shared_ptr<const Texture> scalar_param(const Params& params, std::string_view name, float fallback, float lo,
+                                            float hi) {
+    auto texture = texture_param(params, name, fallback);
+    if (const RGB* c = texture->constant(); c && !(scalar(*c) >= lo && scalar(*c) <= hi))
+        fail_param(params, name,
+                   "must be in [" + number_text(lo) + ", " + number_text(hi) + "], got " + number_text(scalar(*c)));
+    return texture;
+}
+
+ColourChannel::ColourChannel(std::shared_ptr<const Texture> texture) {
+    if (const RGB* c = texture->constant())
+        m_constant = *c;
+    else
+        m_texture = std::move(texture);
+}
+
+RGB ColourChannel::sanitise(const RGB& c) {
+    // NaN and negative give 0, +inf the largest float: finite and >= 0 whatever the texture gives.
+    auto f = [](float x) { return x > 0.0f ? std::min(x, std::numeric_limits<float>::max()) : 0.0f; };
+    return {f(c.r), f(c.g), f(c.b)};
+}
+
+ScalarChannel::ScalarChannel(std::shared_ptr<const Texture> texture, float lo, float hi, float nan_value)
+    : m_lo(lo), m_hi(hi), m_nan(nan_value) {
+    if (const RGB* c = texture->constant())
+        m_constant = clamp(scalar(*c));
+    else
+        m_texture = std::move(texture);
+}
+
+float ScalarChannel::clamp(float x) const { return x == x ? std::clamp(x, m_lo, m_hi) : m_nan; }
+
+const char* const kWhittedDoc =
+    " Whitted terms (all materials): kr mirror reflection, kt transmission (colours or textures); ior index "
+    "inside (default 1, glass 1.5), ior_outside (default 1); fresnel: weight kr by F and kt by 1 - F; "
+    "emission colour or texture (default 0); opacity number or texture (default 1; a texture's alpha when it "
+    "has one, else its channel mean; cut-outs, shadow rays too); absorption: Beer-Lambert coefficient per unit "
+    "distance inside (default 0). Constant kr + kt > 1 (each > 1 with fresnel) is an error; textured values "
+    "are scaled down per hit.";
+
+Material::Whitted read_whitted(const Params& p, const WhittedDefaults& d) {
+    Material::Whitted w;
+    w.kr = colour_param(p, "kr", d.kr);
+    w.kt = colour_param(p, "kt", d.kt);
+    w.emission = colour_param(p, "emission", RGB(0.0f));
+    w.opacity = scalar_param(p, "opacity", 1.0f, 0.0f, 1.0f);
+    w.ior_inside = positive_float(p, "ior", d.ior);
+    w.ior_outside = positive_float(p, "ior_outside", 1.0f);
+    w.fresnel = p.get_bool("fresnel", d.fresnel);
+    w.absorption = finite_rgb(p, "absorption", RGB(0.0f));
+    if (!non_negative(w.absorption)) fail_param(p, "absorption", "must be >= 0");
+
+    const RGB *kr = w.kr->constant(), *kt = w.kt->constant();
+    auto check_range = [&](const RGB* c, const char* name) {
+        if (c && w.fresnel && c->max_component() > 1.0f) fail_param(p, name, "must be <= 1 with fresnel");
+    };
+    check_range(kr, "kr");
+    check_range(kt, "kt");
+    if (kr && kt && !w.fresnel && (*kr + *kt).max_component() > 1.0f)
+        fail_param(p, "kr",
+                   "plus kt exceeds 1 (" + number_text((*kr + *kt).max_component()) +
+                       "); lower them or set fresnel to weight them");
+    return w;
+}
+
+}  // namespace rtlab::shading_detail
