@@ -157,6 +157,9 @@ public:
         // "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error ..." -> "syntax error ..."
         if (const auto column = what.find(", column "); column != std::string::npos) {
             if (const auto colon = what.find(": ", column); colon != std::string::npos) what = what.substr(colon + 2);
+        } else if (what.starts_with("[json.exception.")) {
+            // "[json.exception.out_of_range.406] number overflow parsing '1e999'" -> "number overflow ..."
+            if (const auto close = what.find("] "); close != std::string::npos) what = what.substr(close + 2);
         }
         m_diag.error_at(position == 0 ? 0 : std::min(position - 1, m_text.size()), what);
         failed = true;

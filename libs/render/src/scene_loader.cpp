@@ -711,15 +711,33 @@ private:
                     error("/camera/type", "unknown camera type '" + *t + "'; known: pinhole, thin_lens");
             }
         }
-        if (c.contains("position"))
-            if (auto v = vec3(c["position"], "/camera/position")) spec.eye = *v;
-        if (c.contains("look_at"))
-            if (auto v = vec3(c["look_at"], "/camera/look_at")) spec.look_at = *v;
-        if (c.contains("up"))
-            if (auto v = vec3(c["up"], "/camera/up")) spec.up = *v;
-        if (c.contains("fov"))
+        // A value that failed to read leaves its default, which could make a second, misleading error
+        // ("eye and look_at must differ"): the camera is then not built.
+        bool ok = true;
+        if (c.contains("position")) {
+            if (auto v = vec3(c["position"], "/camera/position"))
+                spec.eye = *v;
+            else
+                ok = false;
+        }
+        if (c.contains("look_at")) {
+            if (auto v = vec3(c["look_at"], "/camera/look_at"))
+                spec.look_at = *v;
+            else
+                ok = false;
+        }
+        if (c.contains("up")) {
+            if (auto v = vec3(c["up"], "/camera/up"))
+                spec.up = *v;
+            else
+                ok = false;
+        }
+        if (c.contains("fov")) {
             if (auto v = number(c["fov"], "/camera/fov", 1e-3, 179.0))
                 spec.vertical_fov_degrees = static_cast<float>(*v);
+            else
+                ok = false;
+        }
         for (const char* key : {"aperture", "focus_distance"}) {
             if (!c.contains(key)) continue;
             const std::string kp = pointer_append(p, key);
@@ -729,7 +747,10 @@ private:
             }
             if (auto v = number(c[key], kp, 0.0, 1e30))
                 (key[0] == 'a' ? m_lens.aperture : m_lens.focus_distance) = static_cast<float>(*v);
+            else
+                ok = false;
         }
+        if (!ok) return std::nullopt;
         return spec;
     }
 
