@@ -71,6 +71,8 @@ int run(const rtlab::app::RenderOptions& options) {
         fmt::print("{} {}{}\n", s.cancelled ? "stopped; wrote what was rendered to" : "wrote", output.string(),
                    s.cancelled ? fmt::format(" ({} of {} tiles)", s.tiles_done, s.tiles_total) : "");
     }
+    if (options.quiet && result.stats.cancelled)
+        fmt::print(stderr, "rtlab-render: stopped; wrote what was rendered to {}\n", output.string());
     return result.stats.cancelled ? 130 : 0;
 }
 
