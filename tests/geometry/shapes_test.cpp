@@ -37,8 +37,9 @@ TEST_CASE("sphere: outside, inside, grazing and from the surface", "[shapes]") {
     h = must_hit(s, Ray{{0.5f, 0, 0}, {1, 0, 0}});  // from inside: the exit, seen from the back
     CHECK(h.t == Approx(1.5f));
     CHECK_FALSE(h.front_face);
-    CHECK(must_hit(s, Ray{{2.0f * (1.0f - 1e-6f), 0, -10}, {0, 0, 1}}).t == Approx(10.0f).epsilon(1e-2));  // grazing inside
-    CHECK(misses(s, Ray{{2.0f * (1.0f + 1e-5f), 0, -10}, {0, 0, 1}}));                                     // grazing outside
+    CHECK(must_hit(s, Ray{{2.0f * (1.0f - 1e-6f), 0, -10}, {0, 0, 1}}).t ==
+          Approx(10.0f).epsilon(1e-2));                                 // grazing inside
+    CHECK(misses(s, Ray{{2.0f * (1.0f + 1e-5f), 0, -10}, {0, 0, 1}}));  // grazing outside
     // Leaving the surface outwards with tmin = 0: no hit further than rounding from the origin.
     const Point3 on = glm::normalize(Vec3(1, 2, 3)) * 2.0f;
     SurfaceHit self;
@@ -93,7 +94,7 @@ TEST_CASE("cylinder: side, caps, open tube and any axis", "[shapes]") {
     CHECK(misses(c, Ray{{-5, 0, 5}, {1, 0, 0}}));  // above the top
     const Cylinder open({0, 0, 0}, {0, 0, 4}, 1.0f, false);
     CHECK(misses(open, Ray{{0.2f, 0.1f, -3}, {0, 0, 1}}));  // along the axis through an open tube
-    h = must_hit(open, Ray{{0, 0, 2}, {1, 0, 0}});         // from inside the tube: its inner wall
+    h = must_hit(open, Ray{{0, 0, 2}, {1, 0, 0}});          // from inside the tube: its inner wall
     CHECK(h.t == Approx(1.0f));
     CHECK_FALSE(h.front_face);
     // A tilted cylinder from (1,1,1) along (1,1,1): a ray perpendicular to the axis through its middle.
@@ -119,6 +120,21 @@ TEST_CASE("disk and quad: inside, edges, outside and parallel", "[shapes]") {
     CHECK(must_hit(q, Ray{{2, 3, 1}, {0, 0, -1}}).uv == Vec2(1, 1));  // the far corner is inside
     CHECK(misses(q, Ray{{2.01f, 1, 1}, {0, 0, -1}}));
     CHECK_THROWS_AS(Quad({0, 0, 0}, {1, 0, 0}, {2, 0, 0}), Error);
+}
+
+TEST_CASE("disk with an inner radius: the hole misses and u spans the ring", "[shapes]") {
+    const Disk ring({0, 0, 0}, {0, 1, 0}, 2.0f, 1.0f);
+    CHECK(misses(ring, Ray{{0.5f, 1, 0}, {0, -1, 0}}));   // in the hole
+    CHECK(misses(ring, Ray{{0.99f, 1, 0}, {0, -1, 0}}));  // just inside the inner edge
+    CHECK(misses(ring, Ray{{2.01f, 1, 0}, {0, -1, 0}}));  // beyond the outer edge
+    CHECK(must_hit(ring, Ray{{1.01f, 1, 0}, {0, -1, 0}}).uv.x == Approx(0.01f).margin(1e-5));
+    CHECK(must_hit(ring, Ray{{0, 1, 1.5f}, {0, -1, 0}}).uv.x == Approx(0.5f));
+    CHECK(must_hit(ring, Ray{{-1.99f, 1, 0}, {0, -1, 0}}).uv.x == Approx(0.99f).margin(1e-5));
+    CHECK_FALSE(ring.occluded(Ray{{0.5f, 1, 0.5f}, {0, -1, 0}}));
+    CHECK(ring.occluded(Ray{{1.5f, 1, 0.5f}, {0, -1, 0}}));
+    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 1, 0}, 1.0f, 1.0f), Error);
+    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 1, 0}, 1.0f, -0.1f), Error);
+    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 1, 0}, 1.0f, std::nanf("")), Error);
 }
 
 TEST_CASE("box: faces, inside rays and normals", "[shapes]") {

@@ -1,0 +1,34 @@
+#pragma once
+// rtlab-render's command line.
+#include <rtlab/render/scene_loader.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rtlab::app {
+
+/// \brief The plugin modules asked for on the command line. Kept apart so that the module loader can be
+/// wired in without touching the rest of the options.
+struct PluginOptions {
+    std::vector<std::filesystem::path> files;  ///< --plugin FILE.so
+    std::vector<std::filesystem::path> dirs;   ///< --plugin-dir DIR: where scenes' plugin names are found
+    bool any() const { return !files.empty() || !dirs.empty(); }
+};
+
+struct RenderOptions {
+    std::filesystem::path scene;
+    std::filesystem::path output;  ///< empty: the scene's render.output
+    SceneOverrides overrides;
+    std::vector<std::filesystem::path> data_dirs;
+    PluginOptions plugins;
+    bool quiet = false;
+    bool list = false;
+};
+
+/// Parses the command line. Returns the exit status when the program should stop now (--help, a usage
+/// error: 0 or 2), nothing when it should go on.
+std::optional<int> parse_options(int argc, char** argv, RenderOptions& options);
+
+}  // namespace rtlab::app

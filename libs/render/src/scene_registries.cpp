@@ -1,0 +1,15 @@
+#include <rtlab/render/scene_registries.hpp>
+
+namespace rtlab {
+
+SceneRegistries SceneRegistries::builtins() {
+    SceneRegistries r;
+    register_builtins(r.textures);
+    register_builtins(r.materials);
+    register_builtins(r.lights);
+    register_builtins(r.shapes);
+    register_builtins(r.tone_operators);
+    return r;
+}
+
+}  // namespace rtlab

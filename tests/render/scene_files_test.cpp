@@ -1,0 +1,89 @@
+// Every scene in scenes/ loads and renders, at 64 x 48, the image committed in tests/render/reference/ within
+// kSceneTolerance. Set RTLAB_UPDATE_REFERENCES=1 to rewrite the references (then look at them).
+#include <rtlab/core/image.hpp>
+#include <rtlab/render/render_job.hpp>
+#include <rtlab/render/scene_loader.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+using namespace rtlab;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kSource = RTLAB_SOURCE_DIR;
+const fs::path kShared = RTLAB_SHARED_DIR;
+
+// Root-mean-square difference over all channels divided by the reference's mean: a scale-free error. A render
+// of the same scene by the same code differs by 0 (the renderer is deterministic); 2% leaves room for another
+// compiler's rounding, while a black image scores 1 or more and a flat image of the reference's mean colour
+// scores the reference's relative standard deviation (above 0.2 for every scene here, checked below).
+constexpr double kSceneTolerance = 0.02;
+
+double relative_rms(const Image& image, const Image& reference) {
+    REQUIRE(image.width() == reference.width());
+    REQUIRE(image.height() == reference.height());
+    double sum_sq = 0.0, sum_ref = 0.0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const RGB a = image.at(x, y), b = reference.at(x, y);
+            for (int c = 0; c < 3; ++c) {
+                const double d = static_cast<double>(a[c]) - static_cast<double>(b[c]);
+                sum_sq += std::isfinite(d) ? d * d : 1e30;
+                sum_ref += std::abs(static_cast<double>(b[c]));
+            }
+        }
+    const double n = 3.0 * image.width() * image.height();
+    return std::sqrt(sum_sq / n) / std::max(sum_ref / n, 1e-12);
+}
+
+Image flat_like(const Image& reference) {
+    RGB mean;
+    for (int y = 0; y < reference.height(); ++y)
+        for (int x = 0; x < reference.width(); ++x) mean += reference.at(x, y);
+    mean = mean * (1.0f / static_cast<float>(reference.width() * reference.height()));
+    Image flat(reference.width(), reference.height());
+    for (int y = 0; y < flat.height(); ++y)
+        for (int x = 0; x < flat.width(); ++x) flat.at(x, y) = mean;
+    return flat;
+}
+
+void check_scene(const std::string& name, bool needs_shared) {
+    if (needs_shared && (kShared.empty() || !fs::exists(kShared / "models"))) {
+        WARN("skipped: scenes/" + name + ".json needs ../shared (models, textures); set RTLAB_SHARED_DIR");
+        return;
+    }
+    SceneLoadOptions options;
+    options.use_environment = false;
+    if (needs_shared) options.data_dirs = {kShared / "models", kShared / "textures"};
+    options.overrides.width = 64;
+    options.overrides.height = 48;
+    const LoadedScene scene = load_scene(kSource / "scenes" / (name + ".json"), options);
+    const Image image = render_job(scene.job).image;
+    const fs::path reference_file = kSource / "tests/render/reference" / (name + ".pfm");
+    if (std::getenv("RTLAB_UPDATE_REFERENCES")) {
+        write_image(image, reference_file);
+        WARN("wrote " + reference_file.string());
+    }
+    const Image reference = read_image(reference_file, ColorEncoding::linear);
+    const double error = relative_rms(image, reference);
+    INFO(name << ": relative RMS difference " << error);
+    CHECK(error <= kSceneTolerance);
+    // The comparison can fail: a black image and a flat one of the right mean colour are far outside it.
+    CHECK(relative_rms(Image(64, 48), reference) > 0.5);
+    CHECK(relative_rms(flat_like(reference), reference) > 10 * kSceneTolerance);
+}
+
+}  // namespace
+
+TEST_CASE("scene file analytic.json matches its reference image", "[scene_files]") { check_scene("analytic", false); }
+TEST_CASE("scene file whitted.json matches its reference image", "[scene_files]") { check_scene("whitted", false); }
+TEST_CASE("scene file bunny.json matches its reference image", "[scene_files]") { check_scene("bunny", true); }
+TEST_CASE("scene file solar_system.json matches its reference image", "[scene_files]") {
+    check_scene("solar_system", true);
+}

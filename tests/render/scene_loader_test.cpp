@@ -1,0 +1,133 @@
+#include <rtlab/core/error.hpp>
+#include <rtlab/render/scene_loader.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace rtlab;
+
+namespace {
+
+// The message of the one Error a scene gives.
+std::string load_error(const std::string& text, const SceneLoadOptions& options = {}) {
+    try {
+        parse_scene(text, "t.json", options);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    FAIL("the scene loaded");
+    return {};
+}
+
+int line_count(const std::string& s) { return 1 + static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+const char* const kGood = R"({
+  "version": 1,
+  // comments are allowed
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 40},
+  "render": {"width": 40, "height": 30, "aa": {"mode": "adaptive", "max_depth": 2}, "seed": 7, "tonemap": "reinhard"},
+  "textures": [{"name": "c", "type": "checker", "color1": [1, 0, 0]}],
+  "materials": [{"name": "m", "type": "lambert", "albedo": "c"}, {"name": "n", "type": "phong", "kd": {"type": "solid", "color": 0.3}}],
+  "lights": [{"type": "point", "position": [0, 5, 5]}],
+  "shapes": [
+    {"name": "ball", "type": "sphere", "radius": 1, "material": "m", "visible": false},
+    {"type": "instance", "shape": "ball", "material": "m", "transform": {"translate": [-1, 0, 0]}},
+    {"type": "instance", "shape": "ball", "material": "n", "transform": [{"scale": 0.5}, {"translate": [1, 0, 0]}]}
+  ]
+})";
+
+}  // namespace
+
+TEST_CASE("a good scene gives its camera, settings, lights and objects", "[scene_loader]") {
+    const LoadedScene s = parse_scene(kGood, "t.json");
+    REQUIRE(s.job.camera);
+    CHECK(s.job.camera->width() == 40);
+    CHECK(s.job.camera->height() == 30);
+    CHECK(s.job.settings.pattern == PixelPattern::adaptive);
+    CHECK(s.job.settings.adaptive.max_depth == 2);
+    CHECK(s.job.settings.seed == 7);
+    CHECK(s.tone_name == "reinhard");
+    CHECK(s.tone != nullptr);
+    CHECK(s.job.lights.size() == 1);
+    // The invisible original is not drawn; its two instances are, at their own places and sizes.
+    REQUIRE(s.job.scene->object_count() == 2);
+    const AABB b = s.job.scene->bounds();
+    CHECK(b.lo.x == Approx(-2.0f));
+    CHECK(b.hi.x == Approx(1.5f));
+}
+
+TEST_CASE("command-line overrides replace the file's values and are checked", "[scene_loader]") {
+    SceneLoadOptions o;
+    o.overrides.width = 80;  // alone: the height keeps the 4:3 aspect ratio
+    o.overrides.aa = "grid";
+    o.overrides.spp = 9;
+    o.overrides.seed = 3;
+    o.overrides.tonemap = "none";
+    const LoadedScene s = parse_scene(kGood, "t.json", o);
+    CHECK(s.job.camera->width() == 80);
+    CHECK(s.job.camera->height() == 60);
+    CHECK(s.job.settings.pattern == PixelPattern::grid);
+    CHECK(s.job.settings.spp == 9);
+    CHECK(s.job.settings.seed == 3);
+    CHECK(s.tone == nullptr);
+    o.overrides.width = 100000;
+    CHECK_THAT(load_error(kGood, o), Catch::Contains("--width/--height"));
+}
+
+TEST_CASE("scene errors carry file line column and pointer and come all together", "[scene_loader]") {
+    const std::string text =
+        "{\n"
+        "  \"version\": 1,\n"
+        "  \"camera\": {\"fov\": \"wide\"},\n"
+        "  \"materials\": [{\"name\": \"m\", \"type\": \"phong\", \"ks\": -1, \"kd\": \"nothing\"},\n"
+        "                {\"name\": \"m\", \"type\": \"plastic\"}],\n"
+        "  \"shapes\": [{\"type\": \"sphere\", \"material\": \"q\", \"colour\": 1}],\n"
+        "  \"extra\": true, \"version\": 1\n"
+        "}\n";
+    const std::string e = load_error(text);
+    INFO(e);
+    CHECK_THAT(e, Catch::Contains("t.json:3:14: /camera/fov: expected a number, not the string \"wide\""));
+    CHECK_THAT(e, Catch::Contains("t.json:4:"));
+    CHECK_THAT(e, Catch::Contains("/materials/0/kd: no texture named 'nothing'"));
+    CHECK_THAT(e, Catch::Contains("t.json:5:18: /materials/1/name: duplicate material name 'm'"));
+    CHECK_THAT(e, Catch::Contains("/materials/1/type: unknown material type 'plastic'"));
+    CHECK_THAT(e, Catch::Contains("/shapes/0/material: no material named 'q'"));
+    CHECK_THAT(e, Catch::Contains("t.json:7:3: (top level)/extra: unknown key 'extra'") ||
+                      Catch::Contains("t.json:7:3: /extra: unknown key 'extra'"));
+    CHECK_THAT(e, Catch::Contains("t.json:7:18: (top level): duplicate key 'version' (first at 2:3)"));
+    CHECK(line_count(e) >= 7);
+}
+
+TEST_CASE("syntax errors give the line and column of the error", "[scene_loader]") {
+    CHECK_THAT(load_error("{\n  \"version\": 1,\n  \"camera\": {]\n}"), Catch::StartsWith("t.json:3:"));
+    CHECK_THAT(load_error("   \n"), Catch::Contains("the file is empty"));
+    CHECK_THAT(load_error("[1, 2]"), Catch::Contains("expected a scene (a JSON object), not a list of 2 values"));
+}
+
+TEST_CASE("plugins are names given to the loader before types are looked up", "[scene_loader]") {
+    const std::string scene = R"({"version": 1, "plugins": ["extra"], "camera": {},
+        "materials": [{"name": "m", "type": "plugin-matte"}],
+        "shapes": [{"type": "sphere", "material": "m"}]})";
+    CHECK_THAT(load_error(scene), Catch::Contains("/plugins/0: the scene needs plugin 'extra', but plugin loading is "
+                                                  "not available"));
+    SceneRegistries registries = SceneRegistries::builtins();
+    std::vector<std::string> loaded;
+    SceneLoadOptions o;
+    o.registries = &registries;
+    o.plugin_loader = [&](const std::string& name) {
+        loaded.push_back(name);
+        registries.materials.add("plugin-matte", [](const Params&) -> std::shared_ptr<Material> {
+            return make_material_registry().create("lambert", {});
+        });
+    };
+    const LoadedScene s = parse_scene(scene, "t.json", o);
+    CHECK(loaded == std::vector<std::string>{"extra"});
+    CHECK(s.job.scene->object_count() == 1);
+    for (const char* path : {"../x", "lib/x", "a\\\\b", "x.so", "X.SO"}) {
+        const std::string bad =
+            std::string(R"({"version": 1, "plugins": [")") + path + R"("], "camera": {}, "shapes": []})";
+        CHECK_THAT(load_error(bad, o), Catch::Contains("is not a plugin name"));
+    }
+    CHECK(loaded.size() == 1);  // a path never reaches the loader
+}
