@@ -16,4 +16,5 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/rtlabConfig.cmake.in
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/rtlabConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/rtlabConfig.cmake ${PROJECT_BINARY_DIR}/rtlabConfigVersion.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/RtlabPlugin.cmake
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/rtlab)

@@ -51,6 +51,10 @@ public:
     /// One-line documentation given at registration ("" when none).
     const std::string& doc(std::string_view name) const { return entry(name).doc; }
 
+    /// The factory registered under name: lets a plugin host move a module's registrations into its own
+    /// registries once it has checked them all.
+    const Factory& factory(std::string_view name) const { return entry(name).factory; }
+
     /// Builds the named object. Unknown names list the known ones; parameters that the factory did not
     /// read are reported as errors naming the object.
     std::shared_ptr<Base> create(std::string_view name, Params params) const {

@@ -1,0 +1,96 @@
+// Plugin module "toon": a toon (cel) shading material, registered as material "toon".
+//
+// Light is not graded smoothly but cut into `levels` flat bands: the lit fraction n.l in (0, 1] becomes
+// ceil(n.l * levels) / levels, so a sphere under one light shows `levels` rings of flat colour and a
+// dark side. A hard-edged highlight and a dark silhouette band complete the cartoon look.
+//
+// Parameters
+//   color           base colour, colour or texture                                  default 0.8
+//   levels          number of lit bands, 1..16                                       default 3
+//   highlight       colour added where the mirror direction is within the highlight  default 0 (none)
+//   highlight_size  cosine between the mirror direction and the viewer above which   default 0.97
+//                   the highlight shows, in [0, 1)
+//   outline         n.v below which the surface is drawn black (silhouette), [0, 1)  default 0 (none)
+//   kr              mirror reflection, colour or texture                             default 0
+//   emission        emitted colour, colour or texture                                default 0
+//
+// Bands are flat under lights whose arriving intensity does not vary over the surface: the classic
+// convention (no fall-off) or a directional light. Physically, the band is divided by pi like Lambert.
+#include <rtlab/core/param_checks.hpp>
+#include <rtlab/render/plugin_abi.hpp>
+#include <rtlab/textures/texture_param.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+using namespace rtlab;
+
+class ToonMaterial final : public Material {
+public:
+    ToonMaterial(Whitted w, std::shared_ptr<const Texture> color, std::shared_ptr<const Texture> highlight, int levels,
+                 float highlight_size, float outline)
+        : Material(std::move(w)),
+          m_color(std::move(color)),
+          m_highlight(std::move(highlight)),
+          m_levels(static_cast<float>(levels)),
+          m_highlight_size(highlight_size),
+          m_outline(outline) {}
+
+    RGB direct(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, Convention c) const override {
+        if (!(wo.z > 0.0f && wi.z > 0.0f)) return {};
+        if (wo.z < m_outline) return {};
+        const float band = std::min(std::ceil(wi.z * m_levels), m_levels) / m_levels;
+        RGB out = t.diffuse * band;
+        // The mirror direction of wi about the normal (0, 0, 1), against the viewer.
+        const float alignment = -wi.x * wo.x - wi.y * wo.y + wi.z * wo.z;
+        if (alignment > m_highlight_size) out += t.specular;
+        return c == Convention::physical ? out * kInvPi : out;
+    }
+
+protected:
+    void local_terms(const TextureLookup& q, SurfaceTerms& t) const override {
+        t.diffuse = non_negative(m_color->eval(q));
+        t.specular = non_negative(m_highlight->eval(q));
+    }
+
+private:
+    // A texture may give anything; negative or NaN colours would poison the image.
+    static RGB non_negative(const RGB& c) {
+        auto f = [](float x) { return x > 0.0f ? x : 0.0f; };
+        return {f(c.r), f(c.g), f(c.b)};
+    }
+
+    std::shared_ptr<const Texture> m_color, m_highlight;
+    float m_levels, m_highlight_size, m_outline;
+};
+
+std::shared_ptr<Material> make_toon(const Params& p) {
+    Material::Whitted w;
+    w.kr = texture_param(p, "kr", RGB(0.0f));
+    w.emission = texture_param(p, "emission", RGB(0.0f));
+    auto color = texture_param(p, "color", RGB(0.8f));
+    auto highlight = texture_param(p, "highlight", RGB(0.0f));
+    const int levels = bounded_int(p, "levels", 3, 1, 16);
+    const float size = float_in_range(p, "highlight_size", 0.97f, 0.0f, 0.999999f);
+    const float outline = float_in_range(p, "outline", 0.0f, 0.0f, 0.999999f);
+    return std::make_shared<ToonMaterial>(std::move(w), std::move(color), std::move(highlight), levels, size, outline);
+}
+
+}  // namespace
+
+RTLAB_PLUGIN_EXPORT const RtlabPluginRecord* rtlab_plugin_query(void) {
+    static const RtlabPluginRecord record = rtlab::make_plugin_record("toon: a cel-shading material");
+    return &record;
+}
+
+RTLAB_PLUGIN_EXPORT int rtlab_plugin_register(const RtlabPluginRegistries* registries, char* error, size_t error_size) {
+    return rtlab::plugin_register(registries, error, error_size, [](rtlab::PluginRegistries& r) {
+        r.materials.add("toon", make_toon,
+                        "cel shading: n.l cut into flat bands. color: colour or texture (default 0.8); levels 1..16 "
+                        "(default 3); highlight colour (default 0) where the mirror direction is within "
+                        "highlight_size (cosine, default 0.97) of the viewer; outline: n.v below which it is black "
+                        "(default 0); kr, emission.");
+    });
+}

@@ -1,0 +1,41 @@
+// An outside project's plugin module: texture "stripes", horizontal bands of two colours in object space.
+//   a, b    the two colours                    defaults (0.9, 0.1, 0.1) and (0.1, 0.1, 0.9)
+//   width   height of one band, > 0            default 0.25
+#include <rtlab/core/param_checks.hpp>
+#include <rtlab/render/plugin_abi.hpp>
+
+#include <cmath>
+
+namespace {
+
+class Stripes final : public rtlab::Texture {
+public:
+    Stripes(rtlab::RGB a, rtlab::RGB b, float width) : m_a(a), m_b(b), m_width(width) {}
+    rtlab::RGB eval(const rtlab::TextureLookup& q) const override {
+        const double band = std::floor(static_cast<double>(q.point.y) / m_width);
+        return std::fmod(std::abs(band), 2.0) == 0.0 ? m_a : m_b;
+    }
+
+private:
+    rtlab::RGB m_a, m_b;
+    float m_width;
+};
+
+std::shared_ptr<rtlab::Texture> make_stripes(const rtlab::Params& p) {
+    return std::make_shared<Stripes>(rtlab::finite_rgb(p, "a", rtlab::RGB(0.9f, 0.1f, 0.1f)),
+                                     rtlab::finite_rgb(p, "b", rtlab::RGB(0.1f, 0.1f, 0.9f)),
+                                     rtlab::positive_float(p, "width", 0.25f));
+}
+
+}  // namespace
+
+RTLAB_PLUGIN_EXPORT const RtlabPluginRecord* rtlab_plugin_query(void) {
+    static const RtlabPluginRecord record = rtlab::make_plugin_record("stripes: two-colour bands");
+    return &record;
+}
+
+RTLAB_PLUGIN_EXPORT int rtlab_plugin_register(const RtlabPluginRegistries* registries, char* error, size_t error_size) {
+    return rtlab::plugin_register(registries, error, error_size, [](rtlab::PluginRegistries& r) {
+        r.textures.add("stripes", make_stripes, "bands of colours a and b, width high, along object-space y");
+    });
+}

@@ -1,0 +1,40 @@
+// Test module: registers names that are taken, to test that the host refuses it naming both owners.
+// Without SELF_CLASH: material "toon" (the toon example's), texture "checker" (a built-in) and the free
+// material "duplicate-only", which must not be registered either when the module is refused. With
+// SELF_CLASH: material "twice" twice, which its own registration reports.
+#include <rtlab/render/plugin_abi.hpp>
+
+namespace {
+class Black final : public rtlab::Material {
+public:
+    Black() : Material(Whitted{}) {}
+    rtlab::RGB direct(const rtlab::SurfaceTerms&, const rtlab::Vec3&, const rtlab::Vec3&,
+                      rtlab::Convention) const override {
+        return {};
+    }
+
+protected:
+    void local_terms(const rtlab::TextureLookup&, rtlab::SurfaceTerms&) const override {}
+};
+
+std::shared_ptr<rtlab::Material> make_black(const rtlab::Params&) { return std::make_shared<Black>(); }
+std::shared_ptr<rtlab::Texture> make_nothing(const rtlab::Params&) { return nullptr; }
+}  // namespace
+
+RTLAB_PLUGIN_EXPORT const RtlabPluginRecord* rtlab_plugin_query(void) {
+    static const RtlabPluginRecord record = rtlab::make_plugin_record("a module registering taken names");
+    return &record;
+}
+
+RTLAB_PLUGIN_EXPORT int rtlab_plugin_register(const RtlabPluginRegistries* registries, char* error, size_t error_size) {
+    return rtlab::plugin_register(registries, error, error_size, [](rtlab::PluginRegistries& r) {
+#if defined(SELF_CLASH)
+        r.materials.add("twice", make_black);
+        r.materials.add("twice", make_black);
+#else
+        r.materials.add("duplicate-only", make_black);
+        r.materials.add("toon", make_black);
+        r.textures.add("checker", make_nothing);
+#endif
+    });
+}
