@@ -6,6 +6,7 @@
 #include <rtlab/app/stop_on_interrupt.hpp>
 #include <rtlab/core/error.hpp>
 #include <rtlab/render/image_output.hpp>
+#include <rtlab/render/plugin.hpp>
 #include <rtlab/render/scene_loader.hpp>
 
 #include <fmt/core.h>
@@ -34,7 +35,9 @@ void list_types(const rtlab::SceneRegistries& r) {
 
 int run(const rtlab::app::RenderOptions& options) {
     rtlab::SceneRegistries registries = rtlab::SceneRegistries::builtins();
-    if (options.plugins.any()) throw rtlab::Error("--plugin/--plugin-dir: plugin loading is not built in yet");
+    rtlab::PluginHost plugins(registries.materials, registries.textures, registries.lights,
+                              rtlab::plugin_search_path(options.plugins.dirs));
+    for (const auto& file : options.plugins.files) plugins.load_file(file);
     if (options.list) {
         list_types(registries);
         return 0;
@@ -42,6 +45,8 @@ int run(const rtlab::app::RenderOptions& options) {
     rtlab::SceneLoadOptions load;
     load.data_dirs = options.data_dirs;
     load.registries = &registries;
+    const std::string context = options.scene.string() + ": plugins";
+    load.plugin_loader = [&](const std::string& name) { plugins.load_by_name(name, context); };
     load.overrides = options.overrides;
     const rtlab::LoadedScene scene = rtlab::load_scene(options.scene, load);
     const std::filesystem::path output = options.output.empty() ? scene.output : options.output;

@@ -9,12 +9,10 @@
 
 namespace rtlab::app {
 
-/// \brief The plugin modules asked for on the command line. Kept apart so that the module loader can be
-/// wired in without touching the rest of the options.
+/// \brief The plugin modules asked for on the command line.
 struct PluginOptions {
     std::vector<std::filesystem::path> files;  ///< --plugin FILE.so
     std::vector<std::filesystem::path> dirs;   ///< --plugin-dir DIR: where scenes' plugin names are found
-    bool any() const { return !files.empty() || !dirs.empty(); }
 };
 
 struct RenderOptions {

@@ -6,6 +6,7 @@
 #include <rtlab/geometry/sphere.hpp>
 #include <rtlab/render/plugin.hpp>
 #include <rtlab/render/render_job.hpp>
+#include <rtlab/render/scene_loader.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -403,4 +404,37 @@ TEST_CASE("a file that is missing or not a shared library is an error naming it"
     }
     CHECK_THAT(error_of([&] { h.plugins.load_file(text_file); }),
                Catch::Contains("plugin '" + fs::canonical(text_file).string() + "': cannot load"));
+}
+
+TEST_CASE("scenes/plugins.json loads toon and wood by name and matches its reference image", "[plugins]") {
+    // The scene names its plugins; they are found on a search path holding only the examples' folder.
+    SceneRegistries registries = SceneRegistries::builtins();
+    PluginHost host(registries.materials, registries.textures, registries.lights, SearchPath({kExampleDir}));
+    SceneLoadOptions options;
+    options.use_environment = false;
+    options.registries = &registries;
+    options.plugin_loader = [&](const std::string& name) { host.load_by_name(name, "plugins.json"); };
+    options.overrides.width = 64;
+    options.overrides.height = 48;
+    const fs::path source = RTLAB_SOURCE_DIR;
+    const LoadedScene scene = load_scene(source / "scenes" / "plugins.json", options);
+    CHECK(scene.plugins == std::vector<std::string>{"toon", "wood"});
+    REQUIRE(host.loaded().size() == 2);
+    const Image image = render_job(scene.job).image;
+    const fs::path reference_file = source / "tests/render/reference/plugins.pfm";
+    if (std::getenv("RTLAB_UPDATE_REFERENCES")) write_image(image, reference_file);
+    const Image reference = read_image(reference_file, ColorEncoding::linear);
+    REQUIRE(reference.width() == 64);
+    REQUIRE(reference.height() == 48);
+    // Same build, same plugins, same seed: the image is the reference to within rounding of the PFM's floats.
+    double worst = 0.0, sum = 0.0;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x)
+            for (int c = 0; c < 3; ++c) {
+                worst = std::max(worst, double(std::abs(image.at(x, y)[c] - reference.at(x, y)[c])));
+                sum += reference.at(x, y)[c];
+            }
+    INFO("worst channel difference " << worst << ", mean " << sum / (64 * 48 * 3));
+    CHECK(worst <= 0.02);
+    CHECK(sum / (64 * 48 * 3) > 0.2);  // neither black nor empty
 }
