@@ -1,5 +1,7 @@
 #include "timing.hpp"
 
+#include <fmt/core.h>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -51,6 +53,8 @@ std::vector<Built> build_methods(const std::vector<std::string>& methods, const 
             build_times.push_back(seconds_since(start));
         }
         b.build_s = median(build_times);
+        for (const std::string& warning : b.accel->stats().warnings)
+            fmt::print(stderr, "warning: {}: {}\n", method, warning);
         built.push_back(std::move(b));
     }
     return built;

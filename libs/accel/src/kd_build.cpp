@@ -10,11 +10,12 @@
 #include <tbb/task_group.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
-#include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace rtlab {
 
@@ -29,151 +30,148 @@ struct BuildNode {
 
 constexpr std::size_t kParallelThreshold = 4096;
 constexpr std::size_t kNaiveWarnSize = 20000;
+constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
-class Builder {
-public:
-    Builder(const KdBuildInput& input, KdStrategy strategy, const KdCostModel& cost, int max_depth)
-        : m_input(input), m_strategy(strategy), m_cost(cost), m_max_depth(max_depth) {}
+/// \brief A node's primitives split between its children, in the node's order. A primitive lying wholly on
+/// one side keeps its box there, and its slot on that side is recorded (kNone elsewhere); one straddling
+/// the plane goes, clipped, to each side its clipped box is not empty on, and is listed in `*_clipped`.
+struct Partition {
+    std::vector<kd::Prim> below, above;
+    std::vector<std::uint32_t> below_slot, above_slot;        // by the node's slot
+    std::vector<std::uint32_t> below_clipped, above_clipped;  // slots in below / above
+};
 
-    using Events = std::array<std::vector<kd::Event>, 3>;
+/// \brief kd-sah: the split events are sorted once at the root and stay sorted on the way down; a node's
+/// state is its events.
+struct SahStrategy {
+    using State = std::array<std::vector<kd::Event>, 3>;
+    const KdCostModel& cost;
 
-    /// kd-sah: the events are sorted once at the root and stay sorted on the way down.
-    std::unique_ptr<BuildNode> build_sah_root(std::vector<kd::Prim> prims, const AABB& box) const {
-        Events events;
+    State root_state(const std::vector<kd::Prim>& prims) const {
+        State events;
         for (auto& e : events) e.reserve(2 * prims.size());
-        for (std::size_t i = 0; i < prims.size(); ++i) kd::add_events(prims[i].box, static_cast<std::uint32_t>(i), events);
+        for (std::size_t i = 0; i < prims.size(); ++i)
+            kd::add_events(prims[i].box, static_cast<std::uint32_t>(i), events);
         kd::sort_events(events);
-        return build_sah(std::move(prims), std::move(events), box, 0);
+        return events;
     }
-
-    std::unique_ptr<BuildNode> build_sah(std::vector<kd::Prim> prims, Events events, const AABB& box, int depth) const {
-        auto node = std::make_unique<BuildNode>();
-        const kd::Split split = depth < m_max_depth && !prims.empty() ? kd::sweep_sah(events, prims.size(), box, m_cost) : kd::Split{};
-        auto make_leaf = [&] {
-            node->primitives.reserve(prims.size());
-            for (const kd::Prim& p : prims) node->primitives.push_back(p.index);
-            return std::move(node);
-        };
-        if (split.axis < 0) return make_leaf();
-        AABB below_box = box, above_box = box;
-        below_box.hi[split.axis] = split.position;
-        above_box.lo[split.axis] = split.position;
-        // Slots in each child (kNone: not there) and the clipped boxes of straddling primitives.
-        constexpr std::uint32_t kNone = 0xFFFFFFFFu;
-        const std::size_t n = prims.size();
-        std::vector<std::uint32_t> below_slot(n, kNone), above_slot(n, kNone);
-        std::vector<kd::Prim> below, above;
-        std::vector<std::uint32_t> straddling;
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const kd::Prim& p = prims[i];
-            const float lo = p.box.lo[split.axis], hi = p.box.hi[split.axis];
-            const bool to_below = (lo == split.position && hi == split.position) ? split.planar_left : hi <= split.position;
-            const bool to_above = (lo == split.position && hi == split.position) ? !split.planar_left : lo >= split.position;
-            if (to_below) {
-                below_slot[i] = static_cast<std::uint32_t>(below.size());
-                below.push_back(p);
-            } else if (to_above) {
-                above_slot[i] = static_cast<std::uint32_t>(above.size());
-                above.push_back(p);
-            } else {
-                straddling.push_back(i);
-            }
-        }
-        // Straddlers are clipped to each side; their old events are dropped and new ones generated.
-        Events below_new, above_new;
-        const std::size_t below_kept = below.size(), above_kept = above.size();
-        for (std::uint32_t i : straddling) {
-            const AABB b = clip(prims[i], below_box), a = clip(prims[i], above_box);
-            if (!b.is_empty()) {
-                kd::add_events(b, static_cast<std::uint32_t>(below.size()), below_new);
-                below.push_back({prims[i].index, b});
-            }
-            if (!a.is_empty()) {
-                kd::add_events(a, static_cast<std::uint32_t>(above.size()), above_new);
-                above.push_back({prims[i].index, a});
-            }
-        }
-        if (2 * (below.size() + above.size()) > 3 * n) return make_leaf();
+    kd::Split choose(const std::vector<kd::Prim>& prims, const State& events, const AABB& box, int) const {
+        return kd::sweep_sah(events, prims.size(), box, cost);
+    }
+    /// The children's events: a stable filter of the parent's keeps their order; only the clipped
+    /// primitives get new events, which are sorted among themselves and merged in.
+    std::pair<State, State> child_states(State events, const Partition& part) const {
+        State below_new, above_new;
+        for (std::uint32_t slot : part.below_clipped) kd::add_events(part.below[slot].box, slot, below_new);
+        for (std::uint32_t slot : part.above_clipped) kd::add_events(part.above[slot].box, slot, above_new);
         kd::sort_events(below_new);
         kd::sort_events(above_new);
-        Events below_events, above_events;
+        State below_events, above_events;
         for (int axis = 0; axis < 3; ++axis) {
-            // A stable filter keeps the parent's order; the few new events are merged in.
             std::vector<kd::Event> b, a;
-            b.reserve(2 * below_kept);
-            a.reserve(2 * above_kept);
+            b.reserve(2 * (part.below.size() - part.below_clipped.size()));
+            a.reserve(2 * (part.above.size() - part.above_clipped.size()));
             for (const kd::Event& e : events[axis]) {
-                if (below_slot[e.slot] != kNone) b.push_back({e.position, e.type, below_slot[e.slot]});
-                else if (above_slot[e.slot] != kNone) a.push_back({e.position, e.type, above_slot[e.slot]});
+                if (part.below_slot[e.slot] != kNone)
+                    b.push_back({e.position, e.type, part.below_slot[e.slot]});
+                else if (part.above_slot[e.slot] != kNone)
+                    a.push_back({e.position, e.type, part.above_slot[e.slot]});
             }
+            std::vector<kd::Event>().swap(events[axis]);
             below_events[axis].resize(b.size() + below_new[axis].size());
             std::merge(b.begin(), b.end(), below_new[axis].begin(), below_new[axis].end(), below_events[axis].begin());
             above_events[axis].resize(a.size() + above_new[axis].size());
             std::merge(a.begin(), a.end(), above_new[axis].begin(), above_new[axis].end(), above_events[axis].begin());
         }
-        Events().swap(events);
-        std::vector<kd::Prim>().swap(prims);
-        node->axis = split.axis;
-        node->split = split.position;
-        if (below.size() + above.size() > kParallelThreshold) {
-            tbb::task_group group;
-            group.run([&] { node->below = build_sah(std::move(below), std::move(below_events), below_box, depth + 1); });
-            node->above = build_sah(std::move(above), std::move(above_events), above_box, depth + 1);
-            group.wait();
-        } else {
-            node->below = build_sah(std::move(below), std::move(below_events), below_box, depth + 1);
-            node->above = build_sah(std::move(above), std::move(above_events), above_box, depth + 1);
+        return {std::move(below_events), std::move(above_events)};
+    }
+};
+
+/// \brief The strategies that choose a split from the node's primitives alone (binned, naive, median,
+/// midpoint): no state.
+struct PrimitiveStrategy {
+    struct State {};
+    KdStrategy strategy;
+    const KdCostModel& cost;
+
+    State root_state(const std::vector<kd::Prim>&) const { return {}; }
+    kd::Split choose(const std::vector<kd::Prim>& prims, const State&, const AABB& box, int depth) const {
+        switch (strategy) {
+            case KdStrategy::sah:
+                break;  // SahStrategy's
+            case KdStrategy::sah_binned:
+                return kd::find_split_binned(prims, box, cost);
+            case KdStrategy::sah_naive:
+                return kd::find_split_naive(prims, box, cost);
+            case KdStrategy::median:
+                return kd::find_split_median(prims, box, depth);
+            case KdStrategy::midpoint:
+                return kd::find_split_midpoint(prims, box);
         }
-        return node;
+        return {};
+    }
+    std::pair<State, State> child_states(State, const Partition&) const { return {}; }
+};
+
+/// \brief The recursion every strategy shares: ask the strategy for a split, partition the primitives
+/// (clipping straddlers to each side), stop at a leaf when the split copies too many, hand the children
+/// their share of the strategy's state, recurse -- large subtrees in parallel.
+template <class Strategy>
+class Builder {
+public:
+    using State = typename Strategy::State;
+
+    Builder(const KdBuildInput& input, const Strategy& strategy, int max_depth)
+        : m_input(input), m_strategy(strategy), m_max_depth(max_depth) {}
+
+    std::unique_ptr<BuildNode> build_root(std::vector<kd::Prim> prims, const AABB& box) const {
+        State state = m_strategy.root_state(prims);
+        return build(std::move(prims), std::move(state), box, 0);
     }
 
-    std::unique_ptr<BuildNode> build(std::vector<kd::Prim> prims, const AABB& box, int depth) const {
-        auto node = std::make_unique<BuildNode>();
-        const kd::Split split = depth < m_max_depth && !prims.empty() ? choose(prims, box, depth) : kd::Split{};
-        if (split.axis < 0) {
-            node->primitives.reserve(prims.size());
-            for (const kd::Prim& p : prims) node->primitives.push_back(p.index);
-            return node;
-        }
+private:
+    std::unique_ptr<BuildNode> build(std::vector<kd::Prim> prims, State state, const AABB& box, int depth) const {
+        const kd::Split split =
+            depth < m_max_depth && !prims.empty() ? m_strategy.choose(prims, state, box, depth) : kd::Split{};
+        if (split.axis < 0) return leaf(prims);
         AABB below_box = box, above_box = box;
         below_box.hi[split.axis] = split.position;
         above_box.lo[split.axis] = split.position;
-        std::vector<kd::Prim> below, above;
-        partition(prims, split, below_box, above_box, below, above);
+        Partition part = partition(prims, split, below_box, above_box);
         // A split that copies more than half of the primitives to both sides does not pay: stop. The
         // cost model alone misses this in flat nodes (all primitives in one plane, as with 1000 stacked
         // quads), where the two halves' areas add up to the parent's and every such split looks a little
         // cheaper than a leaf -- the tree would then grow exponentially. The spatial strategies, which
         // ignore cost, need the rule on any overlapping input.
-        if (2 * (below.size() + above.size()) > 3 * prims.size()) {
-            for (const kd::Prim& p : prims) node->primitives.push_back(p.index);
-            return node;
-        }
+        if (2 * (part.below.size() + part.above.size()) > 3 * prims.size()) return leaf(prims);
+        auto [below_state, above_state] = m_strategy.child_states(std::move(state), part);
         std::vector<kd::Prim>().swap(prims);
+        auto node = std::make_unique<BuildNode>();
         node->axis = split.axis;
         node->split = split.position;
-        if (below.size() + above.size() > kParallelThreshold) {
+        auto build_below = [&] {
+            node->below = build(std::move(part.below), std::move(below_state), below_box, depth + 1);
+        };
+        auto build_above = [&] {
+            node->above = build(std::move(part.above), std::move(above_state), above_box, depth + 1);
+        };
+        if (part.below.size() + part.above.size() > kParallelThreshold) {
             tbb::task_group group;
-            group.run([&] { node->below = build(std::move(below), below_box, depth + 1); });
-            node->above = build(std::move(above), above_box, depth + 1);
+            group.run(build_below);
+            build_above();
             group.wait();
         } else {
-            node->below = build(std::move(below), below_box, depth + 1);
-            node->above = build(std::move(above), above_box, depth + 1);
+            build_below();
+            build_above();
         }
         return node;
     }
 
-private:
-    kd::Split choose(const std::vector<kd::Prim>& prims, const AABB& box, int depth) const {
-        switch (m_strategy) {
-            case KdStrategy::sah: break;  // built from sorted events by build_sah
-            case KdStrategy::sah_binned: return kd::find_split_binned(prims, box, m_cost);
-            case KdStrategy::sah_naive: return kd::find_split_naive(prims, box, m_cost);
-            case KdStrategy::median: return kd::find_split_median(prims, box, depth);
-            case KdStrategy::midpoint: return kd::find_split_midpoint(prims, box);
-        }
-        return {};
+    static std::unique_ptr<BuildNode> leaf(const std::vector<kd::Prim>& prims) {
+        auto node = std::make_unique<BuildNode>();
+        node->primitives.reserve(prims.size());
+        for (const kd::Prim& p : prims) node->primitives.push_back(p.index);
+        return node;
     }
 
     AABB clip(const kd::Prim& p, const AABB& box) const {
@@ -181,28 +179,36 @@ private:
         return p.box.intersected(box);
     }
 
-    void partition(const std::vector<kd::Prim>& prims, const kd::Split& s, const AABB& below_box,
-                   const AABB& above_box, std::vector<kd::Prim>& below, std::vector<kd::Prim>& above) const {
-        for (const kd::Prim& p : prims) {
+    // Primitives lying in the plane go to the side the split chose for them; the others to the side
+    // they lie on, or clipped to both.
+    Partition partition(const std::vector<kd::Prim>& prims, const kd::Split& s, const AABB& below_box,
+                        const AABB& above_box) const {
+        Partition part;
+        part.below_slot.assign(prims.size(), kNone);
+        part.above_slot.assign(prims.size(), kNone);
+        auto add = [](std::vector<kd::Prim>& side, const kd::Prim& p) {
+            side.push_back(p);
+            return static_cast<std::uint32_t>(side.size() - 1);
+        };
+        for (std::size_t i = 0; i < prims.size(); ++i) {
+            const kd::Prim& p = prims[i];
             const float lo = p.box.lo[s.axis], hi = p.box.hi[s.axis];
-            if (lo == s.position && hi == s.position) {
-                (s.planar_left ? below : above).push_back(p);
-            } else if (hi <= s.position) {
-                below.push_back(p);
-            } else if (lo >= s.position) {
-                above.push_back(p);
+            const bool planar = lo == s.position && hi == s.position;
+            if (planar ? s.planar_left : hi <= s.position) {
+                part.below_slot[i] = add(part.below, p);
+            } else if (planar || lo >= s.position) {
+                part.above_slot[i] = add(part.above, p);
             } else {
-                // Straddles the plane: each side keeps the part of the primitive inside it, if any.
                 const AABB b = clip(p, below_box), a = clip(p, above_box);
-                if (!b.is_empty()) below.push_back({p.index, b});
-                if (!a.is_empty()) above.push_back({p.index, a});
+                if (!b.is_empty()) part.below_clipped.push_back(add(part.below, {p.index, b}));
+                if (!a.is_empty()) part.above_clipped.push_back(add(part.above, {p.index, a}));
             }
         }
+        return part;
     }
 
     const KdBuildInput& m_input;
-    KdStrategy m_strategy;
-    const KdCostModel& m_cost;
+    Strategy m_strategy;
     int m_max_depth;
 };
 
@@ -232,7 +238,8 @@ struct Flattener {
                 out.nodes[index] = KdNode::leaf(1, node.primitives[0]);
             } else {
                 out.nodes[index] = KdNode::leaf(count, static_cast<std::uint32_t>(out.primitive_indices.size()));
-                out.primitive_indices.insert(out.primitive_indices.end(), node.primitives.begin(), node.primitives.end());
+                out.primitive_indices.insert(out.primitive_indices.end(), node.primitives.begin(),
+                                             node.primitives.end());
             }
             return cost.leaf_cost(count);
         }
@@ -248,7 +255,8 @@ struct Flattener {
         const double above_cost = flatten(*node.above, children + 1, above_box, depth + 1);
         const double area = box.surface_area();
         if (!(area > 0.0)) return cost.traversal() + below_cost + above_cost;
-        return cost.traversal() + (below_box.surface_area() * below_cost + above_box.surface_area() * above_cost) / area;
+        return cost.traversal() +
+               (below_box.surface_area() * below_cost + above_box.surface_area() * above_cost) / area;
     }
 };
 
@@ -256,18 +264,23 @@ struct Flattener {
 
 std::string_view kd_strategy_name(KdStrategy s) {
     switch (s) {
-        case KdStrategy::sah: return "kd-sah";
-        case KdStrategy::sah_binned: return "kd-sah-binned";
-        case KdStrategy::sah_naive: return "kd-sah-naive";
-        case KdStrategy::median: return "kd-median";
-        case KdStrategy::midpoint: return "kd-midpoint";
+        case KdStrategy::sah:
+            return "kd-sah";
+        case KdStrategy::sah_binned:
+            return "kd-sah-binned";
+        case KdStrategy::sah_naive:
+            return "kd-sah-naive";
+        case KdStrategy::median:
+            return "kd-median";
+        case KdStrategy::midpoint:
+            return "kd-midpoint";
     }
     return "?";
 }
 
 KdStrategy parse_kd_strategy(std::string_view name) {
-    for (KdStrategy s : {KdStrategy::sah, KdStrategy::sah_binned, KdStrategy::sah_naive, KdStrategy::median,
-                         KdStrategy::midpoint})
+    for (KdStrategy s :
+         {KdStrategy::sah, KdStrategy::sah_binned, KdStrategy::sah_naive, KdStrategy::median, KdStrategy::midpoint})
         if (kd_strategy_name(s) == name) return s;
     throw Error("unknown kd-tree strategy '" + std::string(name) +
                 "'; known: kd-sah, kd-sah-binned, kd-sah-naive, kd-median, kd-midpoint");
@@ -285,19 +298,23 @@ KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const K
         out.bounds.expand(b);
     }
     if (strategy == KdStrategy::sah_naive && prims.size() > kNaiveWarnSize)
-        std::cerr << "warning: kd-sah-naive costs O(N^2) per node; " << prims.size()
-                  << " primitives will take a long time (use kd-sah)\n";
+        out.stats.warnings.push_back("kd-sah-naive costs O(N^2) per node; " + std::to_string(prims.size()) +
+                                     " primitives took a long time (kd-sah builds the same kind of tree fast)");
     // A safety cap only (pbrt's 8 + 1.3 log2 N); the cost model ends the SAH strategies well before it.
     const int max_depth =
         std::min(60, 8 + static_cast<int>(std::round(1.3 * std::log2(std::max<std::size_t>(prims.size(), 1)))));
-    Builder builder(input, strategy, cost, max_depth);
     std::unique_ptr<BuildNode> root;
     auto run = [&] {
-        root = strategy == KdStrategy::sah ? builder.build_sah_root(std::move(prims), out.bounds)
-                                           : builder.build(std::move(prims), out.bounds, 0);
+        if (strategy == KdStrategy::sah)
+            root = Builder(input, SahStrategy{cost}, max_depth).build_root(std::move(prims), out.bounds);
+        else
+            root =
+                Builder(input, PrimitiveStrategy{strategy, cost}, max_depth).build_root(std::move(prims), out.bounds);
     };
-    if (threads > 0) tbb::task_arena(threads).execute(run);
-    else run();
+    if (threads > 0)
+        tbb::task_arena(threads).execute(run);
+    else
+        run();
 
     Flattener f{out, cost};
     out.stats.sah_cost = f.flatten_root(*root, out.bounds);
@@ -307,7 +324,8 @@ KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const K
     out.stats.empty_leaves = f.empty_leaves;
     out.stats.max_depth = f.max_depth;
     const std::int64_t full = f.leaves - f.empty_leaves;
-    out.stats.mean_leaf_primitives = full > 0 ? static_cast<double>(f.leaf_primitives) / static_cast<double>(full) : 0.0;
+    out.stats.mean_leaf_primitives =
+        full > 0 ? static_cast<double>(f.leaf_primitives) / static_cast<double>(full) : 0.0;
     out.stats.bytes = static_cast<std::int64_t>(out.nodes.size() * sizeof(KdNode) +
                                                 out.primitive_indices.size() * sizeof(std::uint32_t));
     out.stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

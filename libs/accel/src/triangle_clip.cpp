@@ -1,27 +1,66 @@
 #include "mesh_triangles.hpp"
 
 #include <array>
+#include <cmath>
+#include <limits>
 
 namespace rtlab::accel {
 
+namespace {
+
+// A corner of the clipped polygon in double, with the coordinates that are exact floats marked: the
+// triangle's own corners, and each cut point's coordinate on the axis of its cut (the box plane itself).
+struct Corner {
+    double x[3];
+    bool exact[3];
+};
+
+float round_down(double x) {
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float round_up(double x) {
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+}  // namespace
+
 AABB clip_triangle(const Point3& a, const Point3& b, const Point3& c, const AABB& box) {
+    // Computed in double and rounded outward, so that the bounds hold the whole clipped part whatever the
+    // rounding: a float clip may round a cut point's other coordinates inward, and a triangle reaching
+    // a later split plane by an ulp is then left out of the child that a ray meets it in.
     // A triangle clipped by 6 planes has at most 9 corners.
-    std::array<Point3, 12> poly{a, b, c}, next{};
+    std::array<Corner, 12> poly{}, next{};
+    const Point3* corners[3] = {&a, &b, &c};
+    double scale = 0.0;  // bounds the coordinates' magnitude, for the error bound of the cut points
+    for (int k = 0; k < 3; ++k)
+        for (int axis = 0; axis < 3; ++axis) {
+            poly[k].x[axis] = (*corners[k])[axis];
+            poly[k].exact[axis] = true;
+            scale = std::max(scale, std::abs(poly[k].x[axis]));
+        }
     std::size_t n = 3;
     for (int axis = 0; axis < 3 && n > 0; ++axis) {
         for (int side = 0; side < 2 && n > 0; ++side) {
-            const float plane = side == 0 ? box.lo[axis] : box.hi[axis];
-            auto inside = [&](const Point3& p) { return side == 0 ? p[axis] >= plane : p[axis] <= plane; };
+            const double plane = side == 0 ? box.lo[axis] : box.hi[axis];
+            auto inside = [&](const Corner& p) { return side == 0 ? p.x[axis] >= plane : p.x[axis] <= plane; };
             std::size_t m = 0;
             for (std::size_t i = 0; i < n; ++i) {
-                const Point3& p = poly[i];
-                const Point3& q = poly[(i + 1) % n];
+                const Corner& p = poly[i];
+                const Corner& q = poly[(i + 1) % n];
                 const bool p_in = inside(p), q_in = inside(q);
                 if (p_in) next[m++] = p;
                 if (p_in != q_in) {
-                    const float t = (plane - p[axis]) / (q[axis] - p[axis]);
-                    Point3 x = p + t * (q - p);
-                    x[axis] = plane;  // exactly on the plane, whatever the rounding above
+                    const double t = (plane - p.x[axis]) / (q.x[axis] - p.x[axis]);
+                    Corner x;
+                    for (int k = 0; k < 3; ++k) {
+                        // An edge level in k keeps its coordinate exactly (t * 0 adds nothing).
+                        x.x[k] = p.x[k] + t * (q.x[k] - p.x[k]);
+                        x.exact[k] = p.exact[k] && q.exact[k] && p.x[k] == q.x[k];
+                    }
+                    x.x[axis] = plane;  // exactly on the plane, whatever the rounding above
+                    x.exact[axis] = true;
                     next[m++] = x;
                 }
             }
@@ -29,8 +68,23 @@ AABB clip_triangle(const Point3& a, const Point3& b, const Point3& c, const AABB
             poly = next;
         }
     }
+    if (n == 0) return AABB{};
+    // Cut points of cut points: a few roundings of double each, far below a float's ulp; the bound leaves
+    // a wide margin and costs at most one ulp of float outward.
+    const double error = 1e-12 * scale;
     AABB out;
-    for (std::size_t i = 0; i < n; ++i) out.expand(poly[i]);
+    for (int axis = 0; axis < 3; ++axis) {
+        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+        for (std::size_t i = 0; i < n; ++i) {
+            const Corner& p = poly[i];
+            const float l = p.exact[axis] ? static_cast<float>(p.x[axis]) : round_down(p.x[axis] - error);
+            const float h = p.exact[axis] ? static_cast<float>(p.x[axis]) : round_up(p.x[axis] + error);
+            lo = std::min(lo, l);
+            hi = std::max(hi, h);
+        }
+        out.lo[axis] = lo;
+        out.hi[axis] = hi;
+    }
     return out.intersected(box);
 }
 

@@ -34,6 +34,9 @@ struct AccelStats {
     std::int64_t bytes = -1;             ///< nodes + primitive index arrays + per-primitive precomputation
     double sah_cost = -1.0;              ///< expected cost by the structure's own cost model
     std::int64_t leaf_width = -1;        ///< triangles a leaf tests at once (kd-trees over a mesh)
+    /// What the builder would tell a user (the library writes nothing to a stream itself): for example
+    /// that kd-sah-naive was asked for on a mesh it takes very long on. Empty when all went as expected.
+    std::vector<std::string> warnings;
 };
 
 /// \brief Options common to all builders (each builder reads what applies to it).

@@ -4,16 +4,32 @@
 #include <rtlab/core/box_ray.hpp>
 #include <rtlab/core/ray.hpp>
 
+#include <cmath>
 #include <cstdint>
 
 namespace rtlab {
 
+/// Relative margin by which the walk widens each child's interval at a split plane. A plane distance is
+/// (split - origin) * (1 / direction), three roundings (gamma(3) relative); an interval's ends are such
+/// distances to other planes (or the root box). A hit lying on a split plane -- a vertex or an edge of a
+/// tessellation, where the SAH puts its planes -- would otherwise fall between the two children when the
+/// rounding says the ray leaves one before it enters the other. 8 gamma(3) covers both ends' errors with
+/// room to spare; it widens which nodes are visited, never which hits count (those stay in the ray's own
+/// (tmin, tmax)).
+inline constexpr float kKdIntervalMargin = 8.0f * gamma_bound(3);
+
 namespace detail {
+
+/// t moved away from zero / towards zero by kKdIntervalMargin relative: products, so +-inf stays itself
+/// and NaN stays NaN (never a NaN from inf - inf).
+[[gnu::always_inline]] inline float kd_widen_up(float t) { return t * (1.0f + std::copysign(kKdIntervalMargin, t)); }
+[[gnu::always_inline]] inline float kd_widen_down(float t) { return t * (1.0f - std::copysign(kKdIntervalMargin, t)); }
 
 /// The walk of kd_traverse for rays whose direction has the sign bits of Octant (bit a set for a negative
 /// component a, -0 included), over [tmin, tmax] already clipped to the root box.
 template <bool AnyHit, unsigned Octant, class LeafTest>
-bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, float tmin, float tmax, LeafTest& test_leaf) {
+bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, float tmin, float tmax,
+             LeafTest& test_leaf) {
     const float* origin = box_ray.origin;
     const float* inv_dir = box_ray.inv;
     float closest = ray.tmax;
@@ -50,25 +66,28 @@ bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, floa
             // whole interval.
             const int axis = node.axis();
             const float t_plane = (node.split() - origin[axis]) * inv_dir[axis];
+            // The near child ends a little past the plane and the far child starts a little before it
+            // (kKdIntervalMargin), so a hit on the plane is inside both whatever the rounding.
+            const float t_near_end = kd_widen_up(t_plane), t_far_start = kd_widen_down(t_plane);
             // Siblings are a pair at an even index: the near child is the pair's first or second node, the
             // above one where the direction is negative.
             const std::uint32_t side = (Octant >> axis) & 1u;
             const std::uint32_t near = node.children() | side, far = near ^ 1u;
             const std::uint32_t empty = node.empty_children();
             const bool near_empty = (empty >> side) & 1u, far_empty = (empty >> (side ^ 1u)) & 1u;
-            const bool reaches_far = !(t_plane > tmax) & !far_empty;
-            if ((t_plane < tmin) | near_empty) [[unlikely]] {
+            const bool reaches_far = !(t_far_start > tmax) & !far_empty;
+            if ((t_near_end < tmin) | near_empty) [[unlikely]] {
                 if (!reaches_far) [[unlikely]] {
                     if (!pop()) break;
                     continue;
                 }
-                tmin = t_plane > tmin ? t_plane : tmin;
+                tmin = t_far_start > tmin ? t_far_start : tmin;
                 index = far;
                 continue;
             }
-            stack[top] = {far, t_plane > tmin ? t_plane : tmin, tmax};
+            stack[top] = {far, t_far_start > tmin ? t_far_start : tmin, tmax};
             top += reaches_far;
-            tmax = t_plane < tmax ? t_plane : tmax;
+            tmax = t_near_end < tmax ? t_near_end : tmax;
             index = near;
             continue;
         }
@@ -108,14 +127,22 @@ bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
         return detail::kd_walk<AnyHit, Octant>(tree, ray, box_ray, tmin, tmax, test_leaf);
     };
     switch (octant) {
-        case 0: return walk.template operator()<0>();
-        case 1: return walk.template operator()<1>();
-        case 2: return walk.template operator()<2>();
-        case 3: return walk.template operator()<3>();
-        case 4: return walk.template operator()<4>();
-        case 5: return walk.template operator()<5>();
-        case 6: return walk.template operator()<6>();
-        default: return walk.template operator()<7>();
+        case 0:
+            return walk.template operator()<0>();
+        case 1:
+            return walk.template operator()<1>();
+        case 2:
+            return walk.template operator()<2>();
+        case 3:
+            return walk.template operator()<3>();
+        case 4:
+            return walk.template operator()<4>();
+        case 5:
+            return walk.template operator()<5>();
+        case 6:
+            return walk.template operator()<6>();
+        default:
+            return walk.template operator()<7>();
     }
 }
 
