@@ -75,6 +75,20 @@ def main():
                "epsilons, Embree's own triangle test). Tests tagged `[!mayfail]` are known failures the "
                "report shows as **FAILS**; the others stop `scripts/stability.sh` when they fail.\n")
     out.append(f"{len(rows)} rows, {len(failing)} failing their promise.\n")
+    if failing:
+        out.append("## Failing their promise\n")
+        summary = {}
+        for r in failing:  # one line per (area, method, test): how many inputs of how many rows failed
+            key = (r["area"], r["method"], r["test"])
+            s = summary.setdefault(key, [0, 0, 0])
+            s[0] += 1
+            s[1] += r["failures"]
+            s[2] += r["tried"]
+        for (area, method, test), (n, failures, tried) in summary.items():
+            out.append(f"- {area}, **{method}**: {failures} of {tried} inputs failed over {n} row(s) "
+                       f"(test \"{test}\")")
+        out.append("")
+    out.append("## All rows\n")
     out.append("| area | method | input | tried | failures | rate | failure counted | worst | promise | verdict | test |")
     out.append("|---|---|---|---:|---:|---:|---|---:|---|---|---|")
     for r in rows:

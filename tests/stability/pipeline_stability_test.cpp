@@ -10,6 +10,7 @@
 #include <rtlab/render/radiance_source.hpp>
 #include <rtlab/render/renderer.hpp>
 #include <rtlab/shading/optics.hpp>
+#include <rtlab/textures/image_texture.hpp>
 #include <rtlab/textures/perlin_noise.hpp>
 #include <rtlab/textures/simplex_noise.hpp>
 #include <rtlab/tonemap/tone_operator.hpp>
@@ -142,6 +143,55 @@ TEST_CASE("noise stays bounded and smooth far from the origin", "[stability]") {
             INFO(name << " at " << far << ": slope " << worst_slope << ", period " << worst_period);
             CHECK(failures == 0);
             CHECK(worst_period < 1e-4);
+        }
+    }
+}
+
+TEST_CASE("repeating textures wrap exactly far from the uv origin", "[stability]") {
+    // A float uv at k + f keeps f only to the float spacing at k: that loss is the input's, reported as the
+    // worst error (in texels). What the texture must do is wrap the value it was given exactly: the lookup
+    // at k + f' equals the lookup at f' (f' the fraction the float kept), for whole periods k.
+    auto image = std::make_shared<Image>(64, 64);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (RGB& p : image->pixels()) p = RGB(u(rng), u(rng), u(rng));
+    const ImageTexture nearest(image, {WrapMode::repeat, ImageFilter::nearest});
+    const ImageTexture bilinear(image, {WrapMode::repeat, ImageFilter::bilinear});
+    const TextureRegistry registry = make_texture_registry();
+    const auto checker = registry.create("checker", Params{});
+    for (double k : {1e2, 1e4, 1e5, 1e6}) {
+        for (int which = 0; which < 3; ++which) {
+            const Texture& tex = which == 0   ? static_cast<const Texture&>(nearest)
+                                 : which == 1 ? static_cast<const Texture&>(bilinear)
+                                              : *checker;
+            std::int64_t tried = 0, failures = 0;
+            double worst_texels = 0.0;
+            for (int i = 0; i < 20000; ++i) {
+                const double fu = u(rng), fv = u(rng);
+                const float kf = static_cast<float>(k);  // exact: k is a whole number below 2^24
+                const Vec2 far(kf + static_cast<float>(fu), kf + static_cast<float>(fv));
+                // Exact (Sterbenz): far and kf are within a factor 2 of each other.
+                const Vec2 kept(far.x - kf, far.y - kf);
+                TextureLookup a, b;
+                a.uv = far;
+                b.uv = kept;
+                const RGB ca = tex.eval(a), cb = tex.eval(b);
+                ++tried;
+                // Bilinear weights are computed from the fraction, so allow float rounding there.
+                const float tol = which == 1 ? 1e-3f : 0.0f;
+                failures += std::abs(ca.r - cb.r) > tol || std::abs(ca.g - cb.g) > tol || std::abs(ca.b - cb.b) > tol;
+                worst_texels = std::max(worst_texels, 64.0 * std::max(std::abs(kept.x - fu), std::abs(kept.y - fv)));
+            }
+            char input[64];
+            std::snprintf(input, sizeof input, "uv at ~%g (whole periods away)", k);
+            const char* name = which == 0   ? "image texture, nearest, repeat"
+                               : which == 1 ? "image texture, bilinear, repeat"
+                                            : "checker texture";
+            record({"textures", name, input, tried, failures,
+                    "lookup differs from the same fraction near the origin (worst = float uv loss, texels of 64)",
+                    worst_texels, "0"});
+            INFO(name << " at " << k);
+            CHECK(failures == 0);
         }
     }
 }
