@@ -37,8 +37,9 @@ TEST_CASE("sphere: outside, inside, grazing and from the surface", "[shapes]") {
     h = must_hit(s, Ray{{0.5f, 0, 0}, {1, 0, 0}});  // from inside: the exit, seen from the back
     CHECK(h.t == Approx(1.5f));
     CHECK_FALSE(h.front_face);
-    CHECK(must_hit(s, Ray{{2.0f * (1.0f - 1e-6f), 0, -10}, {0, 0, 1}}).t == Approx(10.0f).epsilon(1e-2));  // grazing inside
-    CHECK(misses(s, Ray{{2.0f * (1.0f + 1e-5f), 0, -10}, {0, 0, 1}}));                                     // grazing outside
+    CHECK(must_hit(s, Ray{{2.0f * (1.0f - 1e-6f), 0, -10}, {0, 0, 1}}).t ==
+          Approx(10.0f).epsilon(1e-2));                                 // grazing inside
+    CHECK(misses(s, Ray{{2.0f * (1.0f + 1e-5f), 0, -10}, {0, 0, 1}}));  // grazing outside
     // Leaving the surface outwards with tmin = 0: no hit further than rounding from the origin.
     const Point3 on = glm::normalize(Vec3(1, 2, 3)) * 2.0f;
     SurfaceHit self;
@@ -93,7 +94,7 @@ TEST_CASE("cylinder: side, caps, open tube and any axis", "[shapes]") {
     CHECK(misses(c, Ray{{-5, 0, 5}, {1, 0, 0}}));  // above the top
     const Cylinder open({0, 0, 0}, {0, 0, 4}, 1.0f, false);
     CHECK(misses(open, Ray{{0.2f, 0.1f, -3}, {0, 0, 1}}));  // along the axis through an open tube
-    h = must_hit(open, Ray{{0, 0, 2}, {1, 0, 0}});         // from inside the tube: its inner wall
+    h = must_hit(open, Ray{{0, 0, 2}, {1, 0, 0}});          // from inside the tube: its inner wall
     CHECK(h.t == Approx(1.0f));
     CHECK_FALSE(h.front_face);
     // A tilted cylinder from (1,1,1) along (1,1,1): a ray perpendicular to the axis through its middle.
@@ -119,6 +120,31 @@ TEST_CASE("disk and quad: inside, edges, outside and parallel", "[shapes]") {
     CHECK(must_hit(q, Ray{{2, 3, 1}, {0, 0, -1}}).uv == Vec2(1, 1));  // the far corner is inside
     CHECK(misses(q, Ray{{2.01f, 1, 1}, {0, 0, -1}}));
     CHECK_THROWS_AS(Quad({0, 0, 0}, {1, 0, 0}, {2, 0, 0}), Error);
+}
+
+TEST_CASE("annulus: the hole misses, the ring hits, u runs from the hole's edge to the rim", "[shapes]") {
+    // Saturn's rings: inner radius 2, outer 4, in the plane z = 0 seen from above.
+    const Disk ring({0, 0, 0}, {0, 0, 1}, 4.0f, 2.0f);
+    CHECK(misses(ring, Ray{{0, 0, 5}, {0, 0, -1}}));      // the centre is in the hole
+    CHECK(misses(ring, Ray{{1.99f, 0, 5}, {0, 0, -1}}));  // just inside the hole
+    CHECK(misses(ring, Ray{{0, 4.01f, 5}, {0, 0, -1}}));  // just beyond the rim
+    CHECK_FALSE(ring.occluded(Ray{{0, 1.5f, 5}, {0, 0, -1}}));
+    CHECK(ring.occluded(Ray{{0, 2.5f, 5}, {0, 0, -1}}));
+    SurfaceHit h = must_hit(ring, Ray{{2.0f, 0, 5}, {0, 0, -1}});  // the hole's edge belongs to the ring
+    CHECK(h.uv.x == Approx(0.0f).margin(1e-6));
+    h = must_hit(ring, Ray{{0, -3.0f, 5}, {0, 0, -1}});
+    CHECK(h.t == Approx(5.0f));
+    CHECK(h.uv.x == Approx(0.5f));
+    h = must_hit(ring, Ray{{4.0f, 0, 5}, {0, 0, -1}});
+    CHECK(h.uv.x == Approx(1.0f));
+    // A full disk keeps u = r / radius.
+    const Disk full({0, 0, 0}, {0, 0, 1}, 4.0f);
+    CHECK(must_hit(full, Ray{{0, -3.0f, 5}, {0, 0, -1}}).uv.x == Approx(0.75f));
+    // The bounds are the outer disk's.
+    CHECK(ring.bounds().hi.x == Approx(4.0f));
+    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 0, 1}, 4.0f, 4.0f), Error);
+    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 0, 1}, 4.0f, -1.0f), Error);
+    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 0, 1}, 4.0f, std::nanf("")), Error);
 }
 
 TEST_CASE("box: faces, inside rays and normals", "[shapes]") {
