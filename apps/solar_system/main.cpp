@@ -4,6 +4,7 @@
 #include "sequence.hpp"
 
 #include <rtlab/app/course_app.hpp>
+#include <rtlab/render/image_output.hpp>
 #include <rtlab/render/pixel_sampler.hpp>
 
 #include <fmt/core.h>
@@ -24,12 +25,12 @@ int main(int argc, char** argv) {
     if (const auto status = rtlab::app::parse_command_line(cli, argc, argv)) return *status;
     return rtlab::app::run_app("rtlab-solar-system", [&] {
         if (!range.empty() && frames == 0) throw rtlab::Error("--frame-range needs --frames");
+        const int count = std::max(frames, 1);
+        const rtlab::solar::FrameRange r = rtlab::solar::parse_frame_range(range, count);
+        (void)rtlab::output_format(options.output);  // a bad -o before the textures load, not after
         const auto data = rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0]));
         const rtlab::solar::SolarAssets assets = rtlab::solar::load_solar_assets(data, procedural);
         if (!options.quiet) fmt::print("{}\n", assets.note);
-
-        const int count = std::max(frames, 1);
-        const rtlab::solar::FrameRange r = rtlab::solar::parse_frame_range(range, count);
         for (int f = r.first; f < r.last; ++f) {
             rtlab::solar::SolarView view{options.width, options.height, f, count, !unfiltered, 1.0f};
             // The settings first (the scene's and the flags'), for the samples the map levels allow for.
