@@ -106,7 +106,10 @@ RenderJob make_bunny_job(std::shared_ptr<const TriangleMesh> mesh, const std::st
     ambient.set("intensity", 0.15);
     job.lights = {lights.create("point", std::move(point)), lights.create("ambient", std::move(ambient))};
     job.whitted.convention = Convention::classic;
-    job.whitted.max_depth = 8;
+    // Inside glass, total internal reflection keeps rays bouncing until the depth limit, which leaves dark
+    // speckles: a 320 x 240 glass bunny without anti-aliasing had 307 pixels darker than 60/255 at depth 8,
+    // 6 at depth 20.
+    job.whitted.max_depth = material == "glass" ? 20 : 8;
     job.whitted.background = RGB(0.55f, 0.65f, 0.8f);
     job.settings.pattern = PixelPattern::adaptive;
     return job;
