@@ -7,6 +7,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
+#include <fstream>
+
 #include "../../apps/bunny/scene.hpp"
 #include "../../apps/whitted/scene.hpp"
 
@@ -48,6 +51,47 @@ TEST_CASE("whitted: red and yellow checkerboard below, blue sky above, the spher
     };
     CHECK(spheres(36, 50) > 20);
     CHECK(spheres(8, 26) > 20);
+}
+
+TEST_CASE("whitted: the glass shell lets shadow rays through, the mirror sphere does not", "[apps]") {
+    const RenderJob job = whitted::make_whitted_job(64, 48);
+    const auto& objects = job.scene->objects();
+    REQUIRE(objects.size() == 4);
+    CHECK_FALSE(objects[1].material->transmits_shadows());  // the mirror sphere
+    CHECK(objects[2].material->transmits_shadows());        // the glass shell, outside and inside
+    CHECK(objects[3].material->transmits_shadows());
+    CHECK(objects[2].material->ior_inside() == 1.5f);
+    CHECK(objects[3].material->ior_inside() == 1.0f);  // air inside the shell
+    CHECK(objects[3].material->ior_outside() == 1.5f);
+}
+
+TEST_CASE("course apps: data files are looked up in --data-dir, RTLAB_DATA_PATH, then beside the checkout", "[apps]") {
+    const auto dir = test::scratch_dir("apps_data_path");
+    const auto a = dir / "a", b = dir / "b";
+    std::filesystem::create_directories(a / "textures");
+    std::filesystem::create_directories(b / "textures");
+    { std::ofstream(a / "textures" / "only_a.txt") << "a"; }
+    { std::ofstream(b / "textures" / "both.txt") << "b"; }
+    { std::ofstream(a / "textures" / "both.txt") << "a"; }
+    ::setenv("RTLAB_DATA_PATH", b.c_str(), 1);
+    ::unsetenv("RTLAB_SHARED_DIR");
+    app::CourseOptions o;
+    o.data_dirs = {a};
+    // As if the executable were build/release/bin/x of this checkout.
+    const auto exe = std::filesystem::path(RTLAB_SOURCE_DIR) / "build" / "release" / "bin" / "x";
+    const SearchPath path = app::course_data_path(o, exe);
+    REQUIRE(path.folders().size() >= 2);
+    CHECK(path.folders()[0] == a);
+    CHECK(path.folders()[1] == b);
+    CHECK(path.find("textures/both.txt") == a / "textures" / "both.txt");  // --data-dir first
+    const auto beside = std::filesystem::path(RTLAB_SOURCE_DIR).parent_path() / "shared";
+    if (std::filesystem::is_directory(beside)) {
+        REQUIRE(path.folders().size() == 3);
+        CHECK(path.folders()[2] == std::filesystem::weakly_canonical(beside));
+    } else {
+        CHECK(path.folders().size() == 2);
+    }
+    ::unsetenv("RTLAB_DATA_PATH");
 }
 
 TEST_CASE("whitted: adaptive anti-aliasing by default, flags override it", "[apps]") {
