@@ -9,6 +9,7 @@ packages=(
   libfmt-dev libpcg-cpp-dev libbenchmark-dev libopenexr-dev
   libembree-dev      # optional reference backend; the build works without it
   python3-matplotlib # charts (scripts/charts.sh, run with /usr/bin/python3)
+  python3-pil        # the demo's animated GIF (scripts/demo.sh, run with /usr/bin/python3)
 )
 
 missing=()

@@ -122,19 +122,29 @@ TEST_CASE("disk and quad: inside, edges, outside and parallel", "[shapes]") {
     CHECK_THROWS_AS(Quad({0, 0, 0}, {1, 0, 0}, {2, 0, 0}), Error);
 }
 
-TEST_CASE("disk with an inner radius: the hole misses and u spans the ring", "[shapes]") {
-    const Disk ring({0, 0, 0}, {0, 1, 0}, 2.0f, 1.0f);
-    CHECK(misses(ring, Ray{{0.5f, 1, 0}, {0, -1, 0}}));   // in the hole
-    CHECK(misses(ring, Ray{{0.99f, 1, 0}, {0, -1, 0}}));  // just inside the inner edge
-    CHECK(misses(ring, Ray{{2.01f, 1, 0}, {0, -1, 0}}));  // beyond the outer edge
-    CHECK(must_hit(ring, Ray{{1.01f, 1, 0}, {0, -1, 0}}).uv.x == Approx(0.01f).margin(1e-5));
-    CHECK(must_hit(ring, Ray{{0, 1, 1.5f}, {0, -1, 0}}).uv.x == Approx(0.5f));
-    CHECK(must_hit(ring, Ray{{-1.99f, 1, 0}, {0, -1, 0}}).uv.x == Approx(0.99f).margin(1e-5));
-    CHECK_FALSE(ring.occluded(Ray{{0.5f, 1, 0.5f}, {0, -1, 0}}));
-    CHECK(ring.occluded(Ray{{1.5f, 1, 0.5f}, {0, -1, 0}}));
-    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 1, 0}, 1.0f, 1.0f), Error);
-    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 1, 0}, 1.0f, -0.1f), Error);
-    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 1, 0}, 1.0f, std::nanf("")), Error);
+TEST_CASE("annulus: the hole misses, the ring hits, u runs from the hole's edge to the rim", "[shapes]") {
+    // Saturn's rings: inner radius 2, outer 4, in the plane z = 0 seen from above.
+    const Disk ring({0, 0, 0}, {0, 0, 1}, 4.0f, 2.0f);
+    CHECK(misses(ring, Ray{{0, 0, 5}, {0, 0, -1}}));      // the centre is in the hole
+    CHECK(misses(ring, Ray{{1.99f, 0, 5}, {0, 0, -1}}));  // just inside the hole
+    CHECK(misses(ring, Ray{{0, 4.01f, 5}, {0, 0, -1}}));  // just beyond the rim
+    CHECK_FALSE(ring.occluded(Ray{{0, 1.5f, 5}, {0, 0, -1}}));
+    CHECK(ring.occluded(Ray{{0, 2.5f, 5}, {0, 0, -1}}));
+    SurfaceHit h = must_hit(ring, Ray{{2.0f, 0, 5}, {0, 0, -1}});  // the hole's edge belongs to the ring
+    CHECK(h.uv.x == Approx(0.0f).margin(1e-6));
+    h = must_hit(ring, Ray{{0, -3.0f, 5}, {0, 0, -1}});
+    CHECK(h.t == Approx(5.0f));
+    CHECK(h.uv.x == Approx(0.5f));
+    h = must_hit(ring, Ray{{4.0f, 0, 5}, {0, 0, -1}});
+    CHECK(h.uv.x == Approx(1.0f));
+    // A full disk keeps u = r / radius.
+    const Disk full({0, 0, 0}, {0, 0, 1}, 4.0f);
+    CHECK(must_hit(full, Ray{{0, -3.0f, 5}, {0, 0, -1}}).uv.x == Approx(0.75f));
+    // The bounds are the outer disk's.
+    CHECK(ring.bounds().hi.x == Approx(4.0f));
+    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 0, 1}, 4.0f, 4.0f), Error);
+    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 0, 1}, 4.0f, -1.0f), Error);
+    CHECK_THROWS_AS(Disk({0, 0, 0}, {0, 0, 1}, 4.0f, std::nanf("")), Error);
 }
 
 TEST_CASE("box: faces, inside rays and normals", "[shapes]") {

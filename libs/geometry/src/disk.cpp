@@ -4,13 +4,14 @@
 
 #include "hit_fill.hpp"
 
+#include <algorithm>
+
 namespace rtlab {
 
 Disk::Disk(const Point3& centre, const Normal3& normal, float radius, float inner_radius)
     : m_centre(centre), m_radius(radius), m_inner_radius(inner_radius) {
     if (!(radius > 0.0f) || !std::isfinite(radius)) throw Error("disk: radius must be positive and finite");
-    if (!(inner_radius >= 0.0f && inner_radius < radius))
-        throw Error("disk: inner radius must be >= 0 and less than the radius");
+    if (!(inner_radius >= 0.0f && inner_radius < radius)) throw Error("disk: inner radius must be in [0, radius)");
     if (!(glm::length(normal) > 0.0f) || !is_finite(normal)) throw Error("disk: normal must be non-zero and finite");
     m_normal = glm::normalize(normal);
 }
@@ -28,6 +29,7 @@ bool Disk::hit_t(const Ray& ray, float& t) const {
     if (!(t > ray.tmin && t < ray.tmax)) return false;
     const Vec3 r = ray.at(t) - m_centre;
     const float r2 = glm::dot(r, r);
+    // The hole's edge belongs to the ring, as the rim does: both bounds closed.
     return r2 <= m_radius * m_radius && r2 >= m_inner_radius * m_inner_radius;
 }
 
@@ -41,8 +43,8 @@ bool Disk::intersect(const Ray& ray, SurfaceHit& hit) const {
     const Point3 p = m_centre + f.to_world(local);
     const Vec3 error = geometry::frame_point_error(p, f, local, Vec3(0.0f));
     const float angle = std::atan2(local.y, local.x);
-    const Vec2 uv((glm::length(Vec2(local.x, local.y)) - m_inner_radius) / (m_radius - m_inner_radius),
-                  (angle < 0.0f ? angle + 2.0f * kPi : angle) / (2.0f * kPi));
+    const float radial = (glm::length(Vec2(local.x, local.y)) - m_inner_radius) / (m_radius - m_inner_radius);
+    const Vec2 uv(std::clamp(radial, 0.0f, 1.0f), (angle < 0.0f ? angle + 2.0f * kPi : angle) / (2.0f * kPi));
     geometry::fill_hit(hit, ray, t, p, error, m_normal, uv, f.s, 0, this);
     return true;
 }

@@ -1,15 +1,16 @@
 #pragma once
-/// \brief Flat disk: a circle in a plane, or an annulus (a disk with a hole).
+/// \brief Flat disk: a circle in a plane, or an annulus (a ring such as Saturn's) with an inner radius.
 #include <rtlab/geometry/shape.hpp>
 
 namespace rtlab {
 
-/// \brief Disk by centre, unit normal (its outside), radius and an optional inner radius (an annulus:
-/// Saturn's rings). uv = ((r - inner) / (radius - inner), angle / 2 pi), so u spans [0, 1] across the ring
-/// and a radial strip texture (inner edge at u = 0) maps onto it whatever the inner radius.
+/// \brief Disk by centre, unit normal (its outside), radius and inner radius (0: a full disk). uv = (radial
+/// fraction (r - inner) / (radius - inner), angle / 2 pi), so u runs from the hole's edge (0) to the rim
+/// (1): a ring image stored as a radial strip, inner edge first, is looked up by u alone.
 class Disk final : public Shape {
 public:
-    /// Throws rtlab::Error unless 0 <= inner_radius < radius, both finite, and the normal is non-zero.
+    /// Throws rtlab::Error for a radius that is not positive and finite, an inner radius outside
+    /// [0, radius), or a zero normal.
     Disk(const Point3& centre, const Normal3& normal, float radius, float inner_radius = 0.0f);
     AABB bounds() const override;
     bool intersect(const Ray& ray, SurfaceHit& hit) const override;

@@ -1,0 +1,39 @@
+// rtlab-bunny [--mesh FILE] [--material diffuse|phong|mirror|glass] [common flags]: a mesh (the Stanford bunny
+// by default) on a floor, through its kd-tree (apps/bunny/scene.cpp).
+#include "scene.hpp"
+
+#include <rtlab/app/course_app.hpp>
+#include <rtlab/geometry/mesh_io.hpp>
+
+#include <fmt/core.h>
+
+#include <chrono>
+
+int main(int argc, char** argv) {
+    CLI::App cli{"rtlab-bunny: the Stanford bunny (or any PLY/OBJ mesh) on a floor"};
+    rtlab::app::CourseOptions options;
+    options.output = "bunny.png";
+    rtlab::app::add_course_options(cli, options);
+    std::string mesh_name = rtlab::bunny::kDefaultMesh, material = "diffuse";
+    cli.add_option("--mesh", mesh_name, "PLY or OBJ file: as given, else on the data path")->capture_default_str();
+    cli.add_option("--material", material, "diffuse, phong, mirror or glass")
+        ->check(CLI::IsMember(rtlab::bunny::material_names()))
+        ->capture_default_str();
+    if (const auto status = rtlab::app::parse_command_line(cli, argc, argv)) return *status;
+    return rtlab::app::run_app("rtlab-bunny", [&] {
+        std::filesystem::path path = mesh_name;
+        if (!std::filesystem::is_regular_file(path))
+            path = rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0])).require(mesh_name);
+        const auto start = std::chrono::steady_clock::now();
+        auto mesh =
+            std::make_shared<const rtlab::TriangleMesh>(rtlab::bunny::with_smooth_normals(rtlab::load_mesh(path)));
+        rtlab::RenderJob job = rtlab::bunny::make_bunny_job(mesh, material, options.width, options.height);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (!options.quiet)
+            fmt::print("{}: {} triangles, loaded with its kd-tree in {:.2f} s\n", path.string(), mesh->triangle_count(),
+                       seconds);
+        rtlab::app::apply_course_options(options, job);
+        return rtlab::app::run_course_render(job, options, options.output, "bunny (" + material + ")").interrupted ? 130
+                                                                                                                   : 0;
+    });
+}

@@ -1,0 +1,204 @@
+// rtlab-whitted and rtlab-bunny, and the flags every course app shares.
+#include "app_run.hpp"
+
+#include <rtlab/app/course_app.hpp>
+#include <rtlab/geometry/mesh_io.hpp>
+#include <shared_data.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <fstream>
+
+#include "../../apps/bunny/scene.hpp"
+#include "../../apps/whitted/scene.hpp"
+
+using namespace rtlab;
+using test::run_app;
+
+namespace {
+
+bool is_red(const RGB& c) { return c.r > 0.3f && c.g < 0.12f && c.b < 0.12f; }
+bool is_yellow(const RGB& c) { return c.r > 0.4f && c.g > 0.35f && c.b < 0.15f; }
+bool is_sky_blue(const RGB& c) { return c.b > 0.7f && c.b > c.r + 0.4f && c.b > c.g + 0.2f; }
+
+}  // namespace
+
+TEST_CASE("whitted: red and yellow checkerboard below, blue sky above, the spheres in between", "[apps]") {
+    RenderJob job = whitted::make_whitted_job(64, 48);
+    job.settings.threads = 2;
+    const Image image = render_job(job).image;
+    int sky_top = 0, red = 0, yellow = 0;
+    for (int x = 0; x < 64; ++x) sky_top += is_sky_blue(image.at(x, 0)) ? 1 : 0;
+    for (int y = 24; y < 48; ++y)
+        for (int x = 0; x < 64; ++x) {
+            red += is_red(image.at(x, y)) ? 1 : 0;
+            yellow += is_yellow(image.at(x, y)) ? 1 : 0;
+        }
+    CHECK(sky_top == 64);      // the whole top row is sky
+    CHECK(red > 64 * 24 / 6);  // each colour covers a good part of the lower half
+    CHECK(yellow > 64 * 24 / 6);
+    // Above the horizon, the spheres stand against the sky: pixels there that differ from the background are
+    // the mirror sphere (right of centre) and the glass shell (left of centre).
+    auto spheres = [&](int x0, int x1) {
+        int n = 0;
+        for (int y = 12; y < 21; ++y)
+            for (int x = x0; x < x1; ++x) {
+                const RGB d = image.at(x, y) - job.whitted.background;
+                n += std::max({std::abs(d.r), std::abs(d.g), std::abs(d.b)}) > 0.02f ? 1 : 0;
+            }
+        return n;
+    };
+    CHECK(spheres(36, 50) > 20);
+    CHECK(spheres(8, 26) > 20);
+}
+
+TEST_CASE("whitted: the glass shell lets shadow rays through, the mirror sphere does not", "[apps]") {
+    const RenderJob job = whitted::make_whitted_job(64, 48);
+    const auto& objects = job.scene->objects();
+    REQUIRE(objects.size() == 4);
+    CHECK_FALSE(objects[1].material->transmits_shadows());  // the mirror sphere
+    CHECK(objects[2].material->transmits_shadows());        // the glass shell, outside and inside
+    CHECK(objects[3].material->transmits_shadows());
+    CHECK(objects[2].material->ior_inside() == 1.5f);
+    CHECK(objects[3].material->ior_inside() == 1.0f);  // air inside the shell
+    CHECK(objects[3].material->ior_outside() == 1.5f);
+}
+
+TEST_CASE("course apps: data files are looked up in --data-dir, RTLAB_DATA_PATH, then beside the checkout", "[apps]") {
+    const auto dir = test::scratch_dir("apps_data_path");
+    const auto a = dir / "a", b = dir / "b";
+    std::filesystem::create_directories(a / "textures");
+    std::filesystem::create_directories(b / "textures");
+    { std::ofstream(a / "textures" / "only_a.txt") << "a"; }
+    { std::ofstream(b / "textures" / "both.txt") << "b"; }
+    { std::ofstream(a / "textures" / "both.txt") << "a"; }
+    ::setenv("RTLAB_DATA_PATH", b.c_str(), 1);
+    ::unsetenv("RTLAB_SHARED_DIR");
+    app::CourseOptions o;
+    o.data_dirs = {a};
+    // As if the executable were build/release/bin/x of this checkout.
+    const auto exe = std::filesystem::path(RTLAB_SOURCE_DIR) / "build" / "release" / "bin" / "x";
+    const SearchPath path = app::course_data_path(o, exe);
+    REQUIRE(path.folders().size() >= 2);
+    CHECK(path.folders()[0] == a);
+    CHECK(path.folders()[1] == b);
+    CHECK(path.find("textures/both.txt") == a / "textures" / "both.txt");  // --data-dir first
+    const auto beside = std::filesystem::path(RTLAB_SOURCE_DIR).parent_path() / "shared";
+    if (std::filesystem::is_directory(beside)) {
+        REQUIRE(path.folders().size() == 3);
+        CHECK(path.folders()[2] == std::filesystem::weakly_canonical(beside));
+    } else {
+        CHECK(path.folders().size() == 2);
+    }
+    ::unsetenv("RTLAB_DATA_PATH");
+}
+
+TEST_CASE("whitted: adaptive anti-aliasing by default, flags override it", "[apps]") {
+    RenderJob job = whitted::make_whitted_job(64, 48);
+    CHECK(job.settings.pattern == PixelPattern::adaptive);
+    CHECK(job.whitted.convention == Convention::classic);
+    app::CourseOptions o;
+    o.spp = 9;
+    app::apply_course_options(o, job);
+    CHECK(job.settings.pattern == PixelPattern::jittered);
+    CHECK(job.settings.spp == 9);
+    o.aa = "none";
+    o.seed = 42;
+    o.max_depth = 2;
+    app::apply_course_options(o, job);
+    CHECK(job.settings.pattern == PixelPattern::none);
+    CHECK(job.settings.seed == 42);
+    CHECK(job.whitted.max_depth == 2);
+}
+
+TEST_CASE("rtlab-whitted writes the image of the scene function, byte for byte", "[apps]") {
+    const auto dir = test::scratch_dir("apps_whitted");
+    const auto out = dir / "whitted.pfm";
+    std::filesystem::remove(out);
+    const auto run = run_app(WHITTED_EXE, "--width 64 --height 48 --threads 2 --quiet -o '" + out.string() + "'", dir);
+    REQUIRE(run.status == 0);
+    const Image written = read_pfm(out);
+    RenderJob job = whitted::make_whitted_job(64, 48);
+    CHECK(test::same_pixels(written, render_job(job).image));
+}
+
+TEST_CASE("course apps: bad flags exit 1 with a message", "[apps]") {
+    const auto dir = test::scratch_dir("apps_flags");
+    struct Case {
+        const char* exe;
+        const char* args;
+        const char* message;
+    };
+    const Case cases[] = {
+        {WHITTED_EXE, "--bogus", "--bogus"},
+        {WHITTED_EXE, "--width 0", "--width"},
+        {WHITTED_EXE, "--aa sideways", "sideways"},
+        {WHITTED_EXE, "--spp many", "--spp"},
+        {WHITTED_EXE, "-o whitted.tiff", "whitted.tiff"},
+        {BUNNY_EXE, "--material velvet", "velvet"},
+        {BUNNY_EXE, "--mesh no-such-mesh.obj", "no-such-mesh.obj"},
+        {SOLAR_EXE, "--frame-range 1:2", "--frames"},
+        {SOLAR_EXE, "--frames 4 --frame-range 3:2", "3:2"},
+        {SOLAR_EXE, "--frames 4 --frame-range 0:5", "0:5"},
+        {SOLAR_EXE, "--frames 4 --frame-range two", "two"},
+        {SOLAR_EXE, "--frames 0", "--frames"},
+    };
+    for (const Case& c : cases) {
+        INFO(c.exe << " " << c.args);
+        const std::string args = std::string(c.args) + " --quiet --width 8 --height 6";
+        const auto run = run_app(c.exe, args, dir);
+        CHECK(run.status == 1);
+        CHECK(run.err.find(c.message) != std::string::npos);
+    }
+    // --help is not an error.
+    CHECK(run_app(WHITTED_EXE, "--help", dir).status == 0);
+}
+
+TEST_CASE("bunny: any mesh stands in the middle of the picture on the floor", "[apps]") {
+    // A small closed mesh (an octahedron) stands in for the bunny, so the test needs no data files.
+    auto mesh = std::make_shared<TriangleMesh>();
+    mesh->positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    mesh->triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    const auto smooth = std::make_shared<const TriangleMesh>(bunny::with_smooth_normals(*mesh));
+    REQUIRE(smooth->has_normals());
+    CHECK(glm::length(smooth->normals[0] - Normal3(1, 0, 0)) < 1e-6f);  // the corner's faces average to the axis
+    RenderJob job = bunny::make_bunny_job(smooth, "diffuse", 64, 48);
+    const Image image = render_job(job).image;
+    // The diffuse material is warm (r > b); the sky is blue (b > r) and the floor grey (r = b).
+    auto warm = [&](int x, int y) { return image.at(x, y).r > image.at(x, y).b + 0.03f; };
+    CHECK(warm(32, 24));
+    int corners = 0;
+    for (int y : {1, 46})
+        for (int x : {1, 62}) corners += warm(x, y) ? 1 : 0;
+    CHECK(corners == 0);
+    CHECK_THROWS_WITH(bunny::make_bunny_job(smooth, "velvet", 64, 48),
+                      Catch::Contains("diffuse, phong, mirror, glass"));
+}
+
+TEST_CASE("rtlab-bunny renders the Stanford bunny in each material", "[apps]") {
+    const auto shared = test::shared_dir();
+    if (!shared) {
+        WARN("skipped: ../shared/models not found (set RTLAB_SHARED_DIR)");
+        return;
+    }
+    const auto dir = test::scratch_dir("apps_bunny");
+    for (const char* material : {"diffuse", "phong", "mirror", "glass"}) {
+        INFO(material);
+        const auto out = dir / (std::string("bunny-") + material + ".pfm");
+        std::filesystem::remove(out);
+        const auto run = run_app(BUNNY_EXE,
+                                 std::string("--width 64 --height 48 --aa none --quiet --material ") + material +
+                                     " --data-dir '" + shared->string() + "' -o '" + out.string() + "'",
+                                 dir);
+        REQUIRE(run.status == 0);
+        const Image image = read_pfm(out);
+        // The silhouette is in the middle: the centre differs from what the corners (sky, floor) show there
+        // without the bunny, and the picture is not blank.
+        const RGB centre = test::mean(image, 28, 20, 36, 28);
+        const RGB sky = test::mean(image, 0, 0, 64, 4);
+        CHECK(sky.b > sky.r);
+        CHECK(glm::length(Vec3(centre.r - sky.r, centre.g - sky.g, centre.b - sky.b)) > 0.05f);
+        if (std::string(material) == "diffuse") CHECK(centre.r > centre.b + 0.03f);
+    }
+}

@@ -1,0 +1,185 @@
+// rtlab-solar-system: the scene, its filtered planet maps, the shimmer they prevent, and frame sequences.
+#include "app_run.hpp"
+
+#include <shared_data.hpp>
+
+#include <catch2/catch.hpp>
+
+#include "../../apps/solar_system/scene.hpp"
+#include "../../apps/solar_system/sequence.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+using namespace rtlab;
+using namespace rtlab::solar;
+using test::run_app;
+
+namespace {
+
+std::optional<SearchPath> shared_path() {
+    const auto dir = test::shared_dir();
+    if (!dir) return std::nullopt;
+    return SearchPath({*dir});
+}
+
+const BodyOnScreen& find(const std::vector<BodyOnScreen>& bodies, std::string_view name) {
+    for (const auto& b : bodies)
+        if (name == b.name) return b;
+    throw Error("no body " + std::string(name));
+}
+
+float luminance(const RGB& c) {
+    auto clamp = [](float x) { return std::clamp(x, 0.0f, 1.0f); };
+    return 0.2126f * clamp(c.r) + 0.7152f * clamp(c.g) + 0.0722f * clamp(c.b);
+}
+
+void check_sun_and_planets(const SolarAssets& assets) {
+    std::vector<BodyOnScreen> where;
+    RenderJob job = make_solar_job(assets, SolarView{64, 48, 0, 1, true, 4.0f}, &where);
+    job.settings.threads = 2;
+    const Image image = render_job(job).image;
+    const BodyOnScreen& sun = find(where, "sun");
+    REQUIRE(sun.in_front);
+    const int sx = static_cast<int>(sun.centre.x), sy = static_cast<int>(sun.centre.y);
+    const RGB c = test::mean(image, sx - 1, sy - 1, sx + 2, sy + 2);
+    CHECK(c.r > 0.8f);  // the Sun glows: its emission, no light needed
+    CHECK(c.g > 0.2f);
+    CHECK(c.r >= c.b);
+    // Jupiter, lit by the point light inside the Sun (which does not shadow it), is brighter than the sky.
+    const BodyOnScreen& jupiter = find(where, "jupiter");
+    const RGB j = image.at(static_cast<int>(jupiter.centre.x), static_cast<int>(jupiter.centre.y));
+    const RGB sky = test::mean(image, 0, 0, 64, 4);
+    CHECK(luminance(j) > 0.2f);
+    CHECK(luminance(j) > 3.0f * luminance(sky));
+    CHECK(luminance(sky) < 0.2f);  // a dark star field, not a blank or white image
+}
+
+}  // namespace
+
+TEST_CASE("solar system: the Sun is bright and the planets lit, procedural textures", "[apps]") {
+    const SolarAssets assets = load_solar_assets(SearchPath{}, false);  // nothing on the path: procedural
+    CHECK_FALSE(assets.real_textures);
+    CHECK(assets.note.find("procedural") != std::string::npos);
+    check_sun_and_planets(assets);
+}
+
+TEST_CASE("solar system: the Sun is bright and the planets lit, the shared textures", "[apps]") {
+    const auto path = shared_path();
+    if (!path) {
+        WARN("skipped: ../shared/textures not found (set RTLAB_SHARED_DIR)");
+        return;
+    }
+    const SolarAssets assets = load_solar_assets(*path);
+    CHECK(assets.real_textures);
+    CHECK(assets.note.find("images from") != std::string::npos);
+    check_sun_and_planets(assets);
+}
+
+TEST_CASE("planet maps: levels average their texels, lod follows the pixel footprint", "[apps]") {
+    Image img(4, 2);
+    for (int x = 0; x < 4; ++x) {
+        img.at(x, 0) = RGB(static_cast<float>(x));
+        img.at(x, 1) = RGB(static_cast<float>(x + 4));
+    }
+    const Image half = downsample(img);
+    REQUIRE(half.width() == 2);
+    REQUIRE(half.height() == 1);
+    CHECK(half.at(0, 0).r == 2.5f);  // (0 + 1 + 4 + 5) / 4
+    CHECK(half.at(1, 0).r == 4.5f);
+    // A map 2048 texels around on a planet 2048 / pi pixels wide is sampled one texel per pixel: level 0.
+    CHECK(planet_lod(2048, 2048.0f / kPi) == Approx(0.0f).margin(1e-5));
+    CHECK(planet_lod(2048, 2048.0f / (8.0f * kPi)) == Approx(3.0f));
+    CHECK(planet_lod(2048, 4000.0f) == 0.0f);  // never sharper than the map
+    // The longitude seam wraps: just either side of u = 0 the lookup blends the first and last columns.
+    Image stripes(8, 4);
+    for (int y = 0; y < 4; ++y) stripes.at(0, y) = RGB(1.0f);
+    const MipTexture t(std::make_shared<MipMap>(stripes), 0.0f);
+    TextureLookup a, b;
+    a.uv = {0.0f, 0.5f};
+    b.uv = {1.0f, 0.5f};
+    CHECK(t.eval(a).r == Approx(0.5f));  // the edge of columns 7 and 0
+    CHECK(t.eval(b).r == Approx(0.5f));
+}
+
+TEST_CASE("solar system: filtered maps stop a small planet shimmering", "[apps]") {
+    // Earth is about 4 pixels wide at 160 x 120. Frame-to-frame change of the pixels around it, over
+    // consecutive frames of a slow orbit (a 1440-frame turn): the true change (64 jittered samples per pixel,
+    // unfiltered maps) against one sample per pixel with and without the filtered maps.
+    const auto path = shared_path();
+    const SolarAssets assets = path ? load_solar_assets(*path) : load_solar_assets(SearchPath{});
+    const int frames = 1440, w = 160, h = 120, count = 6;
+    auto measure = [&](bool filter, PixelPattern pattern, int spp) {
+        double change = 0.0;
+        Image previous;
+        std::vector<BodyOnScreen> previous_where;
+        for (int f = 0; f < count; ++f) {
+            std::vector<BodyOnScreen> where;
+            RenderJob job = make_solar_job(assets, SolarView{w, h, f, frames, filter, 1.0f}, &where);
+            job.settings.pattern = pattern;
+            job.settings.spp = spp;
+            job.settings.threads = 2;
+            Image image = render_job(job).image;
+            if (f > 0) {
+                const BodyOnScreen& e0 = find(previous_where, "earth");
+                const BodyOnScreen& e1 = find(where, "earth");
+                const float r = std::max(e0.radius_pixels, e1.radius_pixels) + 1.0f;
+                const int x0 = static_cast<int>(std::floor(std::min(e0.centre.x, e1.centre.x) - r));
+                const int x1 = static_cast<int>(std::ceil(std::max(e0.centre.x, e1.centre.x) + r));
+                const int y0 = static_cast<int>(std::floor(std::min(e0.centre.y, e1.centre.y) - r));
+                const int y1 = static_cast<int>(std::ceil(std::max(e0.centre.y, e1.centre.y) + r));
+                double sum = 0.0;
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x)
+                        sum += std::abs(luminance(image.at(x, y)) - luminance(previous.at(x, y)));
+                change += sum / ((x1 - x0) * (y1 - y0));
+            }
+            previous = std::move(image);
+            previous_where = std::move(where);
+        }
+        return change / (count - 1);
+    };
+    const double reference = measure(false, PixelPattern::jittered, 64);
+    const double unfiltered = measure(false, PixelPattern::none, 1);
+    const double filtered = measure(true, PixelPattern::none, 1);
+    std::printf(
+        "shimmer (%s): mean frame-to-frame luminance change around Earth: reference %.5f, unfiltered %.5f, "
+        "filtered %.5f\n",
+        assets.real_textures ? "shared textures" : "procedural", reference, unfiltered, filtered);
+    CHECK(unfiltered > 1.5 * filtered);
+    CHECK(std::abs(filtered - reference) < std::abs(unfiltered - reference));
+}
+
+TEST_CASE("frame ranges and numbered files", "[apps]") {
+    CHECK(parse_frame_range("", 10).first == 0);
+    CHECK(parse_frame_range("", 10).last == 10);
+    CHECK(parse_frame_range("3:7", 10).first == 3);
+    CHECK(parse_frame_range("3:7", 10).last == 7);
+    CHECK(parse_frame_range("0:10", 10).last == 10);
+    CHECK_THROWS_WITH(parse_frame_range("7:3", 10), Catch::Contains("0 <= A < B <= 10"));
+    CHECK_THROWS_WITH(parse_frame_range("0:11", 10), Catch::Contains("0 <= A < B <= 10"));
+    CHECK_THROWS_WITH(parse_frame_range("-1:3", 10), Catch::Contains("0 <= A < B"));
+    CHECK_THROWS_WITH(parse_frame_range("3", 10), Catch::Contains("A:B"));
+    CHECK_THROWS_WITH(parse_frame_range("a:b", 10), Catch::Contains("A:B"));
+    CHECK(numbered_path("out/solar.png", 7) == std::filesystem::path("out/solar-0007.png"));
+    CHECK(numbered_path("solar.exr", 12345) == std::filesystem::path("solar-12345.exr"));
+}
+
+TEST_CASE("rtlab-solar-system --frames --frame-range renders just those frames, as the scene function does", "[apps]") {
+    const auto dir = test::scratch_dir("apps_solar");
+    for (int f = 0; f < 3; ++f) std::filesystem::remove(numbered_path(dir / "solar.pfm", f));
+    const auto run =
+        run_app(SOLAR_EXE,
+                "--procedural --width 64 --height 48 --threads 2 --quiet --frames 3 --frame-range 1:3 -o '" +
+                    (dir / "solar.pfm").string() + "'",
+                dir);
+    REQUIRE(run.status == 0);
+    CHECK_FALSE(std::filesystem::exists(dir / "solar-0000.pfm"));
+    REQUIRE(std::filesystem::exists(dir / "solar-0001.pfm"));
+    REQUIRE(std::filesystem::exists(dir / "solar-0002.pfm"));
+    const Image one = read_pfm(dir / "solar-0001.pfm");
+    const Image two = read_pfm(dir / "solar-0002.pfm");
+    CHECK_FALSE(test::same_pixels(one, two));  // the camera moved
+    const SolarAssets assets = load_solar_assets(SearchPath{}, true);
+    CHECK(test::same_pixels(one, render_job(make_solar_job(assets, SolarView{64, 48, 1, 3, true, 4.0f})).image));
+}
