@@ -1,0 +1,56 @@
+"""The chart of the POV-Ray race (scripts/peer-povray.sh): for every setting, how many times faster rtlab is
+than POV-Ray in wall time and in render-phase time, against the targets (3x and 2x), with the PSNR of the
+two pictures written over each pair of bars. Run with Debian's /usr/bin/python3 (python3-matplotlib).
+
+    /usr/bin/python3 scripts/peer/peer_chart.py docs/data/peer_povray.csv docs/charts/peer_povray.png "COMMAND"
+"""
+import csv
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main(argv):
+    if len(argv) != 4:
+        print(__doc__.strip(), file=sys.stderr)
+        return 2
+    with open(argv[1], newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        print(f"peer_chart: {argv[1]} has no rows", file=sys.stderr)
+        return 1
+    labels = [f"{r['scene']}\n{'AA ' + r['threshold'] if r['aa'] == 'adaptive' else 'no AA'}\n{r['threads']} thr"
+              for r in rows]
+    wall = [float(r["wall_ratio"]) for r in rows]
+    render = [float(r["render_ratio"]) for r in rows]
+    x = range(len(rows))
+    fig, ax = plt.subplots(figsize=(10, 5.4))
+    bw = 0.38
+    ax.bar([i - bw / 2 for i in x], wall, bw, label="wall time (start to image on disk)", color="#4c72b0")
+    ax.bar([i + bw / 2 for i in x], render, bw, label="render phase (POV-Ray Trace Time / rtlab render)",
+           color="#dd8452")
+    ax.axhline(3.0, color="#4c72b0", linestyle="--", linewidth=1, label="target, wall: 3x")
+    ax.axhline(2.0, color="#dd8452", linestyle="--", linewidth=1, label="target, render: 2x")
+    top = max(wall + render)
+    for i, r in enumerate(rows):
+        ax.text(i, max(wall[i], render[i]) + 0.02 * top, f"{float(r['psnr_db']):.1f} dB", ha="center", fontsize=8)
+    ax.set_xticks(list(x))
+    ax.set_xticklabels(labels, fontsize=8)
+    ax.set_ylabel("POV-Ray time / rtlab time (higher: rtlab faster)")
+    ax.set_ylim(0, top * 1.15)
+    r0 = rows[0]
+    ax.set_title(f"rtlab against POV-Ray 3.7, {r0['width']}x{r0['height']}, median of {r0['repeat']} runs "
+                 f"(PSNR of the two 8-bit images above each pair)", fontsize=10)
+    ax.legend(fontsize=8, loc="upper left")
+    fig.text(0.01, 0.01, f"{r0['machine']}, load {r0['load_start']} at start; {r0['date']}; {argv[3]}",
+             fontsize=7, color="#555555")
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    fig.savefig(argv[2], dpi=100)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
