@@ -22,8 +22,10 @@ def main(argv):
     if not rows:
         print(f"peer_chart: {argv[1]} has no rows", file=sys.stderr)
         return 1
-    labels = [f"{r['scene']}\n{'AA ' + r['threshold'] if r['aa'] == 'adaptive' else 'no AA'}\n{r['threads']} thr"
-              for r in rows]
+    def aa(r):
+        return f"AA {r['threshold']}, depth {r['aa_depth']}" if r["aa"] == "adaptive" else "no AA"
+
+    labels = [f"{r['scene']}\n{aa(r)}\n{r['threads']} thr" for r in rows]
     wall = [float(r["wall_ratio"]) for r in rows]
     render = [float(r["render_ratio"]) for r in rows]
     cpu = [float(r["cpu_ratio"]) for r in rows]
@@ -45,7 +47,7 @@ def main(argv):
     r0 = rows[0]
     ax.set_title(f"rtlab against POV-Ray 3.7, {r0['width']}x{r0['height']}, median of {r0['repeat']} runs "
                  f"(PSNR of the two 8-bit images above each group)", fontsize=10)
-    ax.legend(fontsize=8, loc="upper left")
+    ax.legend(fontsize=8, loc="upper left", framealpha=0.95)
     fig.text(0.01, 0.01, f"{r0['machine']}, load {r0['load_start']} at start; {r0['date']}; {argv[3]}",
              fontsize=7, color="#555555")
     fig.tight_layout(rect=(0, 0.03, 1, 1))
