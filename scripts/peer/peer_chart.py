@@ -1,6 +1,7 @@
 """The chart of the POV-Ray race (scripts/peer-povray.sh): for every setting, how many times faster rtlab is
-than POV-Ray in wall time, in render-phase time and in CPU seconds, against the targets (3x wall, 2x
-render), with the PSNR of the two pictures written over each group of bars. Run with Debian's /usr/bin/python3 (python3-matplotlib).
+than POV-Ray in wall time, in render-phase time, and in processor seconds of the render phase and of the
+whole run, against the targets (3x wall, 2x render), with the PSNR of the two pictures over each group.
+Run with Debian's /usr/bin/python3 (python3-matplotlib).
 
     /usr/bin/python3 scripts/peer/peer_chart.py docs/data/peer_povray.csv docs/charts/peer_povray.png "COMMAND"
 """
@@ -28,18 +29,23 @@ def main(argv):
     labels = [f"{r['scene']}\n{aa(r)}\n{r['threads']} thr" for r in rows]
     wall = [float(r["wall_ratio"]) for r in rows]
     render = [float(r["render_ratio"]) for r in rows]
+    render_cpu = [float(r["render_cpu_ratio"]) for r in rows]
     cpu = [float(r["cpu_ratio"]) for r in rows]
     x = range(len(rows))
     fig, ax = plt.subplots(figsize=(10, 5.4))
-    bw = 0.27
-    ax.bar([i - bw for i in x], wall, bw, label="wall time (start to image on disk)", color="#4c72b0")
-    ax.bar(list(x), render, bw, label="render phase (POV-Ray Trace Time / rtlab render)", color="#dd8452")
-    ax.bar([i + bw for i in x], cpu, bw, label="CPU seconds of the whole run (user + system)", color="#55a868")
+    bw = 0.2
+    ax.bar([i - 1.5 * bw for i in x], wall, bw, label="wall time (start to image on disk)", color="#4c72b0")
+    ax.bar([i - 0.5 * bw for i in x], render, bw, label="render phase (POV-Ray Trace Time / rtlab render)",
+           color="#dd8452")
+    ax.bar([i + 0.5 * bw for i in x], render_cpu, bw, label="render phase, processor seconds", color="#c44e52")
+    ax.bar([i + 1.5 * bw for i in x], cpu, bw, label="whole run, processor seconds (user + system)",
+           color="#55a868")
     ax.axhline(3.0, color="#4c72b0", linestyle="--", linewidth=1, label="target, wall: 3x")
     ax.axhline(2.0, color="#dd8452", linestyle="--", linewidth=1, label="target, render: 2x")
-    top = max(wall + render + cpu)
+    top = max(wall + render + render_cpu + cpu)
     for i, r in enumerate(rows):
-        ax.text(i, max(wall[i], render[i], cpu[i]) + 0.02 * top, f"{float(r['psnr_db']):.1f} dB", ha="center", fontsize=8)
+        ax.text(i, max(wall[i], render[i], render_cpu[i], cpu[i]) + 0.02 * top, f"{float(r['psnr_db']):.1f} dB",
+                ha="center", fontsize=8)
     ax.set_xticks(list(x))
     ax.set_xticklabels(labels, fontsize=8)
     ax.set_ylabel("POV-Ray time / rtlab time (higher: rtlab faster)")
