@@ -1,12 +1,18 @@
+#include <rtlab/app/course_app.hpp>
 #include <rtlab/app/progress_bar.hpp>
 #include <rtlab/app/stop_on_interrupt.hpp>
+
+#include "scene_fixtures.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <regex>
 #include <string>
+#include <thread>
 
 #include <fcntl.h>
 #include <poll.h>
@@ -93,4 +99,44 @@ TEST_CASE("Ctrl-C sets the stop flag instead of ending the process", "[app]") {
     // A new one starts unset.
     StopOnInterrupt again;
     CHECK_FALSE(again.interrupted());
+}
+
+TEST_CASE("the course render summary gives the render's wall and processor seconds", "[app]") {
+    // scripts/peer-povray.sh reads "in W s (C CPU s)" from this line; C is the processor time of the render
+    // alone, all threads together.
+    RenderJob job;
+    job.scene = std::make_shared<Scene>(test::random_objects(60, 20, 7));
+    job.camera = std::make_shared<PinholeCamera>(
+        CameraSpec{.eye = {0, 2, 4}, .look_at = {0, 1, -10}, .vertical_fov_degrees = 50.0f, .width = 96, .height = 72});
+    job.lights = {test::point_light(Point3(-4, 9, 6), 1.0f)};
+    job.settings.pattern = PixelPattern::adaptive;
+    job.settings.threads = 1;
+    CourseOptions options;
+    const std::filesystem::path out =
+        std::filesystem::temp_directory_path() / ("rtlab_summary_test_" + std::to_string(::getpid()) + ".png");
+
+    std::fflush(stdout);
+    std::FILE* capture = std::tmpfile();
+    REQUIRE(capture);
+    const int saved = ::dup(STDOUT_FILENO);
+    REQUIRE(::dup2(::fileno(capture), STDOUT_FILENO) >= 0);
+    const CourseRenderResult result = run_course_render(job, options, out, "summary");
+    std::fflush(stdout);
+    ::dup2(saved, STDOUT_FILENO);
+    ::close(saved);
+    std::rewind(capture);
+    char buffer[1024] = {};
+    const std::size_t n = std::fread(buffer, 1, sizeof buffer - 1, capture);
+    std::fclose(capture);
+    std::filesystem::remove(out);
+    const std::string line(buffer, n);
+
+    std::smatch m;
+    REQUIRE(std::regex_search(line, m, std::regex(R"(^summary: 96x72 in ([0-9.]+) s \(([0-9.]+) CPU s\), )")));
+    CHECK(std::stod(m[1].str()) == Approx(result.stats.seconds).margin(0.005));
+    CHECK(std::stod(m[2].str()) == Approx(result.cpu_seconds).margin(0.005));
+    // Some it must spend (96x72 adaptive pixels over 80 objects), and no more than every core for as long as
+    // the render lasted (clock ticks allowing; idle thread-pool workers of earlier tests may still spin).
+    CHECK(result.cpu_seconds > 0.0);
+    CHECK(result.cpu_seconds <= result.stats.seconds * std::thread::hardware_concurrency() + 0.02);
 }

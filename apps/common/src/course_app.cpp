@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <exception>
 #include <system_error>
 
@@ -115,7 +116,9 @@ CourseRenderResult run_course_render(const RenderJob& job, const CourseOptions& 
         RenderCallbacks callbacks;
         callbacks.stop = &stop.flag();
         if (bar.enabled()) callbacks.progress = [&bar](const RenderProgress& p) { bar.update(p); };
+        const std::clock_t cpu_start = std::clock();
         rendered = render_job(job, callbacks);
+        result.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
         bar.finish();
         result.interrupted = stop.interrupted();
     }
@@ -124,10 +127,12 @@ CourseRenderResult run_course_render(const RenderJob& job, const CourseOptions& 
     write_render_output(rendered.image, output, tone.get());
     if (!o.quiet) {
         const RenderStats& s = rendered.stats;
-        fmt::print("{}: {}x{} in {:.2f} s, {:.2f} Mrays/s ({} camera, {} shadow, {} reflected, {} refracted){} -> {}\n",
-                   label, rendered.image.width(), rendered.image.height(), s.seconds, s.rays_per_second() * 1e-6,
-                   s.rays.camera, s.rays.shadow, s.rays.reflected, s.rays.refracted,
-                   result.interrupted ? " INTERRUPTED, partial image" : "", output.string());
+        fmt::print(
+            "{}: {}x{} in {:.2f} s ({:.2f} CPU s), {:.2f} Mrays/s ({} camera, {} shadow, {} reflected, {} refracted){} "
+            "-> {}\n",
+            label, rendered.image.width(), rendered.image.height(), s.seconds, result.cpu_seconds,
+            s.rays_per_second() * 1e-6, s.rays.camera, s.rays.shadow, s.rays.reflected, s.rays.refracted,
+            result.interrupted ? " INTERRUPTED, partial image" : "", output.string());
         std::fflush(stdout);
     }
     return result;
