@@ -4,6 +4,7 @@
 #include <rtlab/core/srgb.hpp>
 
 #include "stb_bridge.hpp"
+#include "truncation_check.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -22,7 +23,8 @@ constexpr int kMaxDimension = 1 << 16;
 
 std::string lowercase_extension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return ext;
 }
 
@@ -133,6 +135,7 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     if (bytes.empty()) fail(path, "empty file");
     if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f')) return decode_pfm(bytes, path);
     if (bytes.size() > static_cast<std::size_t>(INT_MAX)) fail(path, "image file too large");
+    detail::check_not_truncated(bytes, path);
     const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0;
     auto check = [&](void* pixels) {
@@ -202,8 +205,8 @@ void write_hdr(const Image& image, const std::filesystem::path& path) {
 void write_pfm(const Image& image, const std::filesystem::path& path) {
     if (image.empty()) fail(path, "cannot write an empty image");
     const bool little = std::endian::native == std::endian::little;
-    const std::string header =
-        "PF\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n" + (little ? "-1.0" : "1.0") + "\n";
+    const std::string header = "PF\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n" +
+                               (little ? "-1.0" : "1.0") + "\n";
     std::vector<unsigned char> bytes(header.begin(), header.end());
     bytes.reserve(header.size() + image.pixel_count() * 12);
     for (int y = image.height() - 1; y >= 0; --y) {

@@ -7,19 +7,24 @@
 
 namespace rtlab {
 
+float transmitted_cos2(float cos_i, float eta) {
+    // (1 - eta)(1 + eta) + eta^2 cos_i^2 rather than 1 - eta^2 sin_i^2: no cancellation for eta near 1 at
+    // grazing incidence. Out of line so that every caller rounds it the same way.
+    const float cos2_i = std::min(cos_i * cos_i, 1.0f);
+    return (1.0f - eta) * (1.0f + eta) + eta * eta * cos2_i;
+}
+
 std::optional<Vec3> refract(const Vec3& d, const Normal3& n, float eta) {
     const float cos_i = -glm::dot(d, n);
-    const float sin2_t = eta * eta * std::max(0.0f, 1.0f - cos_i * cos_i);
-    if (sin2_t >= 1.0f) return std::nullopt;
-    const float cos_t = std::sqrt(1.0f - sin2_t);
+    const float cos2_t = transmitted_cos2(cos_i, eta);
+    if (cos2_t <= 0.0f) return std::nullopt;
+    const float cos_t = std::sqrt(cos2_t);
     return eta * d + (eta * cos_i - cos_t) * n;
 }
 
 float fresnel_dielectric(float cos_i, float eta) {
     cos_i = std::clamp(cos_i, 0.0f, 1.0f);
-    // cos_t^2 = 1 - eta^2 sin_i^2 = (1 - eta)(1 + eta) + eta^2 cos_i^2: no cancellation for eta near 1 at
-    // grazing incidence, where 1 - sin2_t cancels.
-    const float cos2_t = (1.0f - eta) * (1.0f + eta) + eta * eta * (cos_i * cos_i);
+    const float cos2_t = transmitted_cos2(cos_i, eta);
     if (cos2_t <= 0.0f) return 1.0f;
     const float cos_t = std::sqrt(cos2_t);
     // With eta = n_i / n_t: r_s = (eta cos_i - cos_t) / (eta cos_i + cos_t),
@@ -33,9 +38,9 @@ float fresnel_schlick(float cos_i, float eta) {
     cos_i = std::clamp(cos_i, 0.0f, 1.0f);
     // Going into the optically thinner medium, Schlick's formula needs the transmitted angle's cosine.
     if (eta > 1.0f) {
-        const float sin2_t = eta * eta * (1.0f - cos_i * cos_i);
-        if (sin2_t >= 1.0f) return 1.0f;
-        cos_i = std::sqrt(1.0f - sin2_t);
+        const float cos2_t = transmitted_cos2(cos_i, eta);
+        if (cos2_t <= 0.0f) return 1.0f;
+        cos_i = std::sqrt(cos2_t);
     }
     const float r0 = (1.0f - eta) / (1.0f + eta);
     const float f0 = r0 * r0;

@@ -10,9 +10,14 @@ namespace rtlab {
 /// Mirror direction of the incident direction `d` (pointing towards the surface) about unit normal n.
 inline Vec3 reflect(const Vec3& d, const Normal3& n) { return d - 2.0f * glm::dot(d, n) * n; }
 
+/// Squared cosine of the transmitted angle, cos_t^2 = 1 - eta^2 (1 - cos_i^2), for the incident angle's
+/// cosine cos_i and eta = n_incident / n_transmitted; <= 0 means total internal reflection. refract and
+/// fresnel_dielectric both decide total internal reflection from this one value, so they agree at every angle.
+float transmitted_cos2(float cos_i, float eta);
+
 /// Refracted direction of unit incident direction `d` (pointing towards the surface) through a surface
 /// with unit normal n facing the incident side, with eta = n_incident / n_transmitted.
-/// nullopt on total internal reflection.
+/// nullopt on total internal reflection (transmitted_cos2 <= 0), exactly where fresnel_dielectric is 1.
 std::optional<Vec3> refract(const Vec3& d, const Normal3& n, float eta);
 
 /// Unpolarised Fresnel reflectance of a dielectric interface; cos_i = cos of the incident angle (> 0 on the
