@@ -126,9 +126,8 @@ bool is_index(std::string_view s) {
 
 // "f c1 c2 ...", each corner v, v/vt, v//vn or v/vt/vn.
 void check_face(std::string_view line, const ElementCounts& so_far, const ElementCounts& total, const LineError& fail) {
-    std::size_t pos = 1, corners = 0;
+    std::size_t pos = 1;
     for (std::string_view corner = next_word(line, pos); !corner.empty(); corner = next_word(line, pos)) {
-        ++corners;
         const auto n = 1 + static_cast<std::size_t>(std::count(corner.begin(), corner.end(), '/'));
         std::string_view slot[3];  // v, vt, vn
         for (std::size_t k = 0, start = 0; k < n && k < 3; ++k) {
@@ -146,11 +145,6 @@ void check_face(std::string_view line, const ElementCounts& so_far, const Elemen
         if (n >= 2 && !slot[1].empty()) check_index(slot[1], so_far.uvs, total.uvs, kUv, fail);
         if (n == 3) check_index(slot[2], so_far.normals, total.normals, kNormal, fail);
     }
-    // A face of one or two corners encloses nothing: a cut-off line or a broken exporter, not a shape to drop
-    // silently.
-    if (corners < 3)
-        fail("face has " + std::to_string(corners) + (corners == 1 ? " corner" : " corners") +
-             ", at least 3 are needed");
 }
 
 // The vertex and face lines tinyobjloader will read, checked first, which also gives the line number for the
@@ -260,7 +254,7 @@ TriangleMesh load_obj(const std::filesystem::path& path, MeshLoadInfo* info) {
     for (const auto& shape : shapes) {
         std::size_t offset = 0;
         for (const auto corners : shape.mesh.num_face_vertices) {
-            // Fan (c0, c1, c2), (c0, c2, c3), ... in place; check_lines has refused faces of fewer than 3 corners.
+            // Fan (c0, c1, c2), (c0, c2, c3), ... in place; faces with fewer than 3 corners are dropped.
             for (std::size_t c = 2; c < corners; ++c)
                 mesh.triangles.push_back({vertex_of(shape.mesh.indices[offset]),
                                           vertex_of(shape.mesh.indices[offset + c - 1]),
