@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "shared_data.hpp"
 
 #include <fstream>
@@ -33,6 +35,9 @@ TEST_CASE("OBJ polygons are fanned in file order across groups", "[obj]") {
     CHECK(m.triangles[2] == std::array<std::uint32_t, 3>{0, 1, 4});
     CHECK(m.vertex_count() == 5);
     CHECK_FALSE(m.has_normals());
+    // Dropped, but not silently: the caller hears of it.
+    CHECK(std::find(info.warnings.begin(), info.warnings.end(), "1 face with fewer than 3 corners dropped (line 11)") !=
+          info.warnings.end());
 }
 
 TEST_CASE("OBJ negative indices, normals and uvs", "[obj]") {
@@ -65,6 +70,8 @@ TEST_CASE("malformed OBJ files give errors naming the file and the problem", "[o
     const Bad cases[] = {
         {"empty.obj", "", "empty file"},
         {"garbage.obj", "this is not a mesh\nat all\n", "no vertices or faces"},
+        {"points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "no faces"},
+        {"segment.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "no triangles: 1 face with fewer than 3 corners dropped"},
         {"range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "vertex index 4 out of range (3 vertices)"},
         {"nanv.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n", "line 2: vertex coordinate 2"},
         {"infv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 -inf\nf 1 2 3\n", "line 3: vertex coordinate 3"},

@@ -320,7 +320,8 @@ Outcome try_load(Load&& load, std::string* message) {
 
 }  // namespace
 
-// An OBJ face with two corners and a Radiance HDR file cut after its header once loaded without error.
+// A Radiance HDR file cut after its header once loaded without error. A face with fewer than 3 corners is
+// dropped (FORMATS.md), so a file whose only face has two corners holds no triangle: an error.
 TEST_CASE("malformed meshes and images give an rtlab Error naming the file", "[stability]") {
     const auto dir = std::filesystem::temp_directory_path() / "rtlab_stability_malformed";
     std::filesystem::create_directories(dir);

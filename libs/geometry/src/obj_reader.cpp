@@ -124,10 +124,11 @@ bool is_index(std::string_view s) {
     return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
-// "f c1 c2 ...", each corner v, v/vt, v//vn or v/vt/vn.
-void check_face(std::string_view line, const ElementCounts& so_far, const ElementCounts& total, const LineError& fail) {
-    std::size_t pos = 1;
-    for (std::string_view corner = next_word(line, pos); !corner.empty(); corner = next_word(line, pos)) {
+// "f c1 c2 ...", each corner v, v/vt, v//vn or v/vt/vn. Returns the number of corners.
+std::size_t check_face(std::string_view line, const ElementCounts& so_far, const ElementCounts& total,
+                       const LineError& fail) {
+    std::size_t pos = 1, corners = 0;
+    for (std::string_view corner = next_word(line, pos); !corner.empty(); corner = next_word(line, pos), ++corners) {
         const auto n = 1 + static_cast<std::size_t>(std::count(corner.begin(), corner.end(), '/'));
         std::string_view slot[3];  // v, vt, vn
         for (std::size_t k = 0, start = 0; k < n && k < 3; ++k) {
@@ -145,11 +146,18 @@ void check_face(std::string_view line, const ElementCounts& so_far, const Elemen
         if (n >= 2 && !slot[1].empty()) check_index(slot[1], so_far.uvs, total.uvs, kUv, fail);
         if (n == 3) check_index(slot[2], so_far.normals, total.normals, kNormal, fail);
     }
+    return corners;
 }
+
+// Faces with fewer than 3 corners, which tinyobjloader drops without a word (FORMATS.md drops them too).
+struct ShortFaces {
+    std::size_t count = 0;
+    std::size_t first_line = 0;
+};
 
 // The vertex and face lines tinyobjloader will read, checked first, which also gives the line number for the
 // error.
-void check_lines(const std::filesystem::path& path) {
+ShortFaces check_lines(const std::filesystem::path& path) {
     const std::vector<unsigned char> bytes = read_binary_file(path);
     const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     auto count = [](ElementCounts& counts, std::string_view line) {
@@ -161,13 +169,16 @@ void check_lines(const std::filesystem::path& path) {
             ++counts.normals;
     };
     ElementCounts total, so_far;
+    ShortFaces short_faces;
     for_each_line(text, [&](std::string_view line, std::size_t) { count(total, line); });
     for_each_line(text, [&](std::string_view line, std::size_t line_no) {
         const LineError fail{path, line_no};
         if (starts_statement(line, "v")) check_vertex(line, fail);
-        if (starts_statement(line, "f")) check_face(line, so_far, total, fail);
+        if (starts_statement(line, "f") && check_face(line, so_far, total, fail) < 3 && short_faces.count++ == 0)
+            short_faces.first_line = line_no;
         count(so_far, line);
     });
+    return short_faces;
 }
 
 }  // namespace
@@ -179,7 +190,7 @@ TriangleMesh load_obj(const std::filesystem::path& path, MeshLoadInfo* info) {
     if (!std::filesystem::exists(path, ec)) fail("no such file");
     if (std::filesystem::file_size(path, ec) == 0) fail("empty file");
 
-    check_lines(path);
+    const ShortFaces short_faces = check_lines(path);
 
     tinyobj::ObjReaderConfig config;
     config.triangulate = false;
@@ -254,7 +265,7 @@ TriangleMesh load_obj(const std::filesystem::path& path, MeshLoadInfo* info) {
     for (const auto& shape : shapes) {
         std::size_t offset = 0;
         for (const auto corners : shape.mesh.num_face_vertices) {
-            // Fan (c0, c1, c2), (c0, c2, c3), ... in place; faces with fewer than 3 corners are dropped.
+            // Fan (c0, c1, c2), (c0, c2, c3), ... in place.
             for (std::size_t c = 2; c < corners; ++c)
                 mesh.triangles.push_back({vertex_of(shape.mesh.indices[offset]),
                                           vertex_of(shape.mesh.indices[offset + c - 1]),
@@ -262,6 +273,12 @@ TriangleMesh load_obj(const std::filesystem::path& path, MeshLoadInfo* info) {
             offset += corners;
         }
     }
+    const std::size_t dropped = short_faces.count;
+    const std::string dropped_text = std::to_string(dropped) + (dropped == 1 ? " face" : " faces") +
+                                     " with fewer than 3 corners dropped (line " +
+                                     std::to_string(short_faces.first_line) + (dropped == 1 ? ")" : " and later)");
+    if (mesh.triangles.empty()) fail(dropped ? "no triangles: " + dropped_text : std::string("no faces"));
+    if (dropped) out.warnings.push_back(dropped_text);
     return mesh;
 }
 
