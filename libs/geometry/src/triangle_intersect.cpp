@@ -14,12 +14,9 @@ TriangleTest parse_triangle_test(std::string_view name) {
 
 std::string_view to_string(TriangleTest test) {
     switch (test) {
-        case TriangleTest::watertight:
-            return "watertight";
-        case TriangleTest::moller:
-            return "moller";
-        case TriangleTest::plane:
-            return "plane";
+        case TriangleTest::watertight: return "watertight";
+        case TriangleTest::moller: return "moller";
+        case TriangleTest::plane: return "plane";
     }
     return "?";
 }
