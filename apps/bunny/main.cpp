@@ -25,8 +25,7 @@ int main(int argc, char** argv) {
         if (!std::filesystem::is_regular_file(path))
             path = rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0])).require(mesh_name);
         const auto start = std::chrono::steady_clock::now();
-        auto mesh =
-            std::make_shared<const rtlab::TriangleMesh>(rtlab::bunny::with_smooth_normals(rtlab::load_mesh(path)));
+        auto mesh = std::make_shared<const rtlab::TriangleMesh>(rtlab::with_smooth_normals(rtlab::load_mesh(path)));
         rtlab::RenderJob job = rtlab::bunny::make_bunny_job(mesh, material, options.width, options.height);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!options.quiet)

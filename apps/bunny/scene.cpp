@@ -2,38 +2,17 @@
 
 #include <rtlab/accel/mesh_shape.hpp>
 #include <rtlab/core/error.hpp>
+#include <rtlab/geometry/fit_on_floor.hpp>
 #include <rtlab/geometry/instance.hpp>
 #include <rtlab/geometry/quad.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>
-
-#include <glm/gtc/matrix_transform.hpp>
-
-#include <algorithm>
 
 namespace rtlab::bunny {
 
 const std::vector<std::string>& material_names() {
     static const std::vector<std::string> kNames = {"diffuse", "phong", "mirror", "glass"};
     return kNames;
-}
-
-TriangleMesh with_smooth_normals(TriangleMesh mesh) {
-    if (mesh.has_normals()) return mesh;
-    std::vector<Vec3> sum(mesh.positions.size(), Vec3(0.0f));
-    for (std::size_t i = 0; i < mesh.triangle_count(); ++i) {
-        if (mesh.is_degenerate(i)) continue;
-        const Vec3 a = mesh.corner(i, 0), b = mesh.corner(i, 1), c = mesh.corner(i, 2);
-        const Vec3 n = glm::cross(b - a, c - a);  // its length is twice the area: the weight
-        for (int k = 0; k < 3; ++k) sum[mesh.triangles[i][static_cast<std::size_t>(k)]] += n;
-    }
-    mesh.normals.resize(sum.size());
-    for (std::size_t v = 0; v < sum.size(); ++v) {
-        const float len = glm::length(sum[v]);
-        // A vertex no triangle uses (the bunny has 1,113) gets any unit normal: nothing interpolates it.
-        mesh.normals[v] = len > 0.0f && std::isfinite(len) ? sum[v] / len : Normal3(0.0f, 1.0f, 0.0f);
-    }
-    return mesh;
 }
 
 namespace {
@@ -70,11 +49,11 @@ RenderJob make_bunny_job(std::shared_ptr<const TriangleMesh> mesh, const std::st
     const auto surface = make_material(materials, material);
     if (!mesh || mesh->triangle_count() == 0) throw Error("bunny: the mesh has no triangles");
 
+    // The same fit as a scene file's mesh key "fit": 2 (scenes/bunny.json).
     const AABB box = mesh->bounds();
     const Vec3 extent = box.hi - box.lo;
-    const float scale = 2.0f / std::max({extent.x, extent.y, extent.z});
-    const Vec3 base(0.5f * (box.lo.x + box.hi.x), box.lo.y, 0.5f * (box.lo.z + box.hi.z));
-    const Mat4 to_world = glm::scale(Mat4(1.0f), Vec3(scale)) * glm::translate(Mat4(1.0f), -base);
+    const float scale = fit_scale(box, kFitSize);
+    const Mat4 to_world = fit_on_floor(box, kFitSize);
     const auto shape = std::make_shared<Instance>(std::make_shared<MeshShape>(std::move(mesh), "kd-sah"), to_world);
 
     Params checker;

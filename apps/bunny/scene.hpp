@@ -1,5 +1,6 @@
 #pragma once
 /// \brief The bunny scene built in code (rtlab-bunny), so that a test can build the same one.
+#include <rtlab/geometry/smooth_normals.hpp>
 #include <rtlab/geometry/triangle_mesh.hpp>
 #include <rtlab/render/render_job.hpp>
 
@@ -15,9 +16,8 @@ inline constexpr const char* kDefaultMesh = "models/stanford-bunny.obj";
 /// diffuse, phong, mirror, glass.
 const std::vector<std::string>& material_names();
 
-/// Area-weighted vertex normals for a mesh that has none (a scanned mesh such as the bunny), so that it
-/// shades smoothly; a mesh with normals is returned unchanged.
-TriangleMesh with_smooth_normals(TriangleMesh mesh);
+/// The mesh's largest extent in the scene.
+inline constexpr float kFitSize = 2.0f;
 
 /// The mesh (any PLY or OBJ, scaled so that its largest extent is 2, centred over the origin, standing on
 /// the floor at y = 0) as a MeshShape with its kd-tree (SAH), in the material `material` (material_names()),

@@ -160,7 +160,7 @@ TEST_CASE("bunny: any mesh stands in the middle of the picture on the floor", "[
     auto mesh = std::make_shared<TriangleMesh>();
     mesh->positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     mesh->triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-    const auto smooth = std::make_shared<const TriangleMesh>(bunny::with_smooth_normals(*mesh));
+    const auto smooth = std::make_shared<const TriangleMesh>(with_smooth_normals(*mesh));
     REQUIRE(smooth->has_normals());
     CHECK(glm::length(smooth->normals[0] - Normal3(1, 0, 0)) < 1e-6f);  // the corner's faces average to the axis
     RenderJob job = bunny::make_bunny_job(smooth, "diffuse", 64, 48);

@@ -5,9 +5,11 @@
 #include <rtlab/geometry/box.hpp>
 #include <rtlab/geometry/cylinder.hpp>
 #include <rtlab/geometry/disk.hpp>
+#include <rtlab/geometry/fit_on_floor.hpp>
 #include <rtlab/geometry/instance.hpp>
 #include <rtlab/geometry/mesh_io.hpp>
 #include <rtlab/geometry/quad.hpp>
+#include <rtlab/geometry/smooth_normals.hpp>
 #include <rtlab/geometry/sphere.hpp>
 #include <rtlab/geometry/triangle_shape.hpp>
 #include <rtlab/render/shape_registry.hpp>
@@ -122,13 +124,24 @@ void register_builtins(ShapeRegistry& r) {
             const std::string accel = one_of(p, "accel", "kd-sah",
                                              {"kd-sah", "kd-sah-binned", "kd-sah-naive", "kd-median", "kd-midpoint",
                                               "kd-three-way", "bvh", "octree", "brute"});
-            auto mesh = std::make_shared<TriangleMesh>(load_mesh(file));
+            const bool smooth = p.get_bool("smooth_normals", false);
+            const float fit = p.has("fit") ? positive_float(p, "fit", 1.0f) : 0.0f;  // 0: as in the file
+            TriangleMesh loaded = load_mesh(file);
+            if (smooth) loaded = with_smooth_normals(std::move(loaded));
+            auto mesh = std::make_shared<TriangleMesh>(std::move(loaded));
             if (mesh->triangle_count() == 0) throw Error(p.context() + ": '" + file + "' has no triangles");
-            return build(p, [&] { return std::make_shared<MeshShape>(std::move(mesh), accel); });
+            return build(p, [&]() -> std::shared_ptr<Shape> {
+                const AABB box = mesh->bounds();
+                auto shape = std::make_shared<MeshShape>(std::move(mesh), accel);
+                if (fit == 0.0f) return shape;
+                return std::make_shared<Instance>(std::move(shape), fit_on_floor(box, fit));
+            });
         },
         "triangle mesh from a PLY or OBJ file, with its own acceleration structure. filename (required; found "
         "beside the scene, then on the data path); accel: kd-sah | kd-sah-binned | kd-sah-naive | kd-median | "
-        "kd-midpoint | kd-three-way | bvh | octree | brute (default kd-sah)");
+        "kd-midpoint | kd-three-way | bvh | octree | brute (default kd-sah); smooth_normals: true | false, "
+        "area-weighted vertex normals when the file has none (default false); fit > 0: scaled so that its largest "
+        "extent is fit, centred over the origin, standing on y = 0 (default: as in the file)");
     r.add(
         "instance",
         [](const Params& p) -> std::shared_ptr<Shape> {
