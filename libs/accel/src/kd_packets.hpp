@@ -257,6 +257,16 @@ template <TriangleTest Test, int W>
                 const F inv = one / det;
                 t = t_scaled * inv;
                 bits &= lane_bits((t > tmin_lanes) & (t < tmax_lanes));
+                // The scalar test's t error bound (watertight_t_error), on the lanes.
+                const auto max_abs = [](F a, F b, F c) {
+                    a = abs_lanes<W>(a), b = abs_lanes<W>(b), c = abs_lanes<W>(c);
+                    a = a > b ? a : b;
+                    return a > c ? a : c;
+                };
+                const F delta_t =
+                    watertight_t_error<F>(max_abs(ax, bx, cx), max_abs(ay, by, cy), max_abs(az0, bz0, cz0),
+                                          max_abs(sz * az0, sz * bz0, sz * cz0), max_abs(u, v, w), abs_lanes<W>(inv));
+                bits &= lane_bits(t > delta_t);
                 u_out = v * inv;
                 v_out = w * inv;
             }
