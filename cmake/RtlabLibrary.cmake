@@ -11,6 +11,12 @@ function(rtlab_add_library name)
   add_library(rtlab::${name} ALIAS ${target})
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} POSITION_INDEPENDENT_CODE ON)
   target_compile_features(${target} PUBLIC cxx_std_20)
+  # The ray-triangle and slab tests are inline in public headers, so they compile with the caller's flags.
+  # Their exactness (watertight edge functions that agree across a shared edge) needs every a*b - c*d
+  # rounded twice: GCC contracts it into one FMA whenever the target has FMA (-march=native, haswell) and
+  # Clang within an expression by default. A usage requirement, so consumers of the installed package
+  # get it too.
+  target_compile_options(${target} PUBLIC $<$<COMPILE_LANG_AND_ID:CXX,GNU,Clang,AppleClang>:-ffp-contract=off>)
   target_include_directories(${target} PUBLIC
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>

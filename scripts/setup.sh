@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
+  clang-format-14    # scripts/format.sh names this version, so every machine formats alike
   libglm-dev libstb-dev libtinyobjloader-dev catch2 libtbb-dev libcli11-dev nlohmann-json3-dev
   libfmt-dev libpcg-cpp-dev libbenchmark-dev libopenexr-dev
   libembree-dev      # optional reference backend; the build works without it

@@ -334,8 +334,10 @@ inline Counts run(const Case& c, int sources, std::uint32_t seed) {
                     expected, offset, double(glm::dot(-w, n)), ours, in.origin.x, in.origin.y, in.origin.z, -w.x, -w.y,
                     -w.z);
             if (debug && ours < 0.5 * expected && k.inward_fail < 6)
-                std::printf("  inward fail: expected %.9g offset %.9g cos %.3g hit at %.9g\n", expected, offset,
-                            double(glm::dot(-w, n)), ours);
+                std::printf(
+                    "  inward fail: expected %.9g offset %.9g cos %.3g hit at %.9g origin %a %a %a dir %a %a %a\n",
+                    expected, offset, double(glm::dot(-w, n)), ours, in.origin.x, in.origin.y, in.origin.z,
+                    in.direction.x, in.direction.y, in.direction.z);
         }
         auto connect = [&](const Ray& ray, const Ray& fixed) {
             if (crosses(ray)) {

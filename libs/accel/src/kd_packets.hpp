@@ -244,7 +244,7 @@ template <TriangleTest Test, int W>
         // Lanes with an edge function of exactly zero take the scalar path (double-precision recompute).
         const I exact = (u == zero) | (v == zero) | (w == zero);
         int bits = lane_bits(~(negative & positive) & ~exact);
-        const int redo = lane_bits(exact);
+        int redo = lane_bits(exact);
         if (bits) {
             const F det = u + v + w;
             const F t_scaled = u * (sz * az0) + v * (sz * bz0) + w * (sz * cz0);
@@ -257,6 +257,19 @@ template <TriangleTest Test, int W>
                 const F inv = one / det;
                 t = t_scaled * inv;
                 bits &= lane_bits((t > tmin_lanes) & (t < tmax_lanes));
+                // The scalar test's t error bound (watertight_t_error), on the lanes.
+                const auto max_abs = [](F a, F b, F c) {
+                    a = abs_lanes<W>(a), b = abs_lanes<W>(b), c = abs_lanes<W>(c);
+                    a = a > b ? a : b;
+                    return a > c ? a : c;
+                };
+                const F delta_t =
+                    watertight_t_error<F>(max_abs(ax, bx, cx), max_abs(ay, by, cy), max_abs(az0, bz0, cz0),
+                                          max_abs(sz * az0, sz * bz0, sz * cz0), max_abs(u, v, w), abs_lanes<W>(inv));
+                // Hits within the bound are decided by the scalar test (double-precision t), as it decides them.
+                const int near = bits & lane_bits(t <= delta_t);
+                bits &= ~near;
+                redo |= near;
                 u_out = v * inv;
                 v_out = w * inv;
             }

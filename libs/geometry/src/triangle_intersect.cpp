@@ -1,6 +1,7 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/geometry/triangle_intersect.hpp>
 
+#include <cmath>
 #include <string>
 
 namespace rtlab {
@@ -14,9 +15,12 @@ TriangleTest parse_triangle_test(std::string_view name) {
 
 std::string_view to_string(TriangleTest test) {
     switch (test) {
-        case TriangleTest::watertight: return "watertight";
-        case TriangleTest::moller: return "moller";
-        case TriangleTest::plane: return "plane";
+        case TriangleTest::watertight:
+            return "watertight";
+        case TriangleTest::moller:
+            return "moller";
+        case TriangleTest::plane:
+            return "plane";
     }
     return "?";
 }
@@ -32,6 +36,39 @@ WatertightRay::WatertightRay(const Ray& ray) : origin(ray.origin) {
     sx = d[kx] / d[kz];
     sy = d[ky] / d[kz];
     sz = 1.0f / d[kz];
+}
+
+bool watertight_near_hit_in_front(const WatertightRay& r, const Point3& p0, const Point3& p1, const Point3& p2) {
+    using D = double;
+    // The differences of floats are exact in double for all but far-apart exponents; the shear (sx, sy, sz)
+    // defines the ray the float test intersects, so it is taken as exact here too.
+    auto shear = [&r](const Point3& p, D& x, D& y, D& z, D& z_world) {
+        const D px = D(p[r.kx]) - D(r.origin[r.kx]), py = D(p[r.ky]) - D(r.origin[r.ky]);
+        z_world = D(p[r.kz]) - D(r.origin[r.kz]);
+        x = px - D(r.sx) * z_world;
+        y = py - D(r.sy) * z_world;
+        z = D(r.sz) * z_world;
+    };
+    D ax, ay, az, aw, bx, by, bz, bw, cx, cy, cz, cw;
+    shear(p0, ax, ay, az, aw);
+    shear(p1, bx, by, bz, bw);
+    shear(p2, cx, cy, cz, cw);
+    const D u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+    const D det = u + v + w;
+    if (det == 0.0) return false;
+    const D t = (u * az + v * bz + w * cz) / det;
+    auto max_abs = [](D x, D y, D z) { return std::fmax(std::fabs(x), std::fmax(std::fabs(y), std::fabs(z))); };
+    // watertight_t_error's expression with double's gamma(n) = n eps / (1 - n eps), eps = 2^-53 (one more
+    // rounding, of the exact differences above, is absorbed by the factor 3 there).
+    constexpr D eps = 0x1p-53;
+    auto gamma = [](int n) { return n * eps / (1.0 - n * eps); };
+    const D max_x = max_abs(ax, bx, cx), max_y = max_abs(ay, by, cy), max_zw = max_abs(aw, bw, cw);
+    const D max_z = max_abs(az, bz, cz), max_e = max_abs(u, v, w);
+    const D delta_z = gamma(3) * max_z;
+    const D delta_x = gamma(5) * (max_x + max_zw), delta_y = gamma(5) * (max_y + max_zw);
+    const D delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    const D delta_t = 3.0 * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) / std::fabs(det);
+    return t > delta_t;
 }
 
 PlaneTriangle::PlaneTriangle(const Point3& p0, const Point3& p1, const Point3& p2) {
