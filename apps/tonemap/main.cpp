@@ -4,8 +4,8 @@
 #include <rtlab/core/image.hpp>
 #include <rtlab/tonemap/tone_operator.hpp>
 
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <CLI/CLI.hpp>
 
 #include <exception>
 #include <optional>
@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", output, "output image (.png; .hdr or .pfm keep linear display values)")->required();
     app.add_option("--op", op, "ward, reinhard, exposure or aces (default reinhard)");
     app.add_option("--key", key, "reinhard: key value (default 0.18)");
-    app.add_option("--white", white, "reinhard: white point in scaled luminance (default: image maximum; 0 = infinite)");
+    app.add_option("--white", white,
+                   "reinhard: white point in scaled luminance (default: image maximum; 0 = infinite)");
     app.add_option("--ldmax", ldmax, "ward: display maximum luminance in cd/m2 (default 100)");
     app.add_option("--stops", stops, "exposure, aces: exposure in stops (default 0)");
     CLI11_PARSE(app, argc, argv);

@@ -15,7 +15,7 @@ using namespace rtlab;
 struct Workload {
     std::vector<Point3> corners;  // 3 per triangle
     std::vector<PlaneTriangle> planes;
-    std::vector<Ray> rays;         // ray i is tested against triangle i
+    std::vector<Ray> rays;  // ray i is tested against triangle i
 };
 
 const Workload& workload() {
@@ -48,7 +48,8 @@ void bm_watertight(benchmark::State& state) {
     for (const Ray& r : w.rays) sheared.emplace_back(r);
     std::size_t i = 0, hits = 0;
     for (auto _ : state) {
-        const auto h = intersect_watertight(sheared[i], 0.0f, kInfinity, w.corners[3 * i], w.corners[3 * i + 1], w.corners[3 * i + 2]);
+        const auto h = intersect_watertight(sheared[i], 0.0f, kInfinity, w.corners[3 * i], w.corners[3 * i + 1],
+                                            w.corners[3 * i + 2]);
         hits += h.has_value();
         benchmark::DoNotOptimize(h);
         i = (i + 1) & 4095;
@@ -61,8 +62,8 @@ void bm_watertight_with_setup(benchmark::State& state) {
     const Workload& w = workload();
     std::size_t i = 0;
     for (auto _ : state) {
-        const auto h = intersect_watertight(WatertightRay(w.rays[i]), 0.0f, kInfinity, w.corners[3 * i], w.corners[3 * i + 1],
-                                            w.corners[3 * i + 2]);
+        const auto h = intersect_watertight(WatertightRay(w.rays[i]), 0.0f, kInfinity, w.corners[3 * i],
+                                            w.corners[3 * i + 1], w.corners[3 * i + 2]);
         benchmark::DoNotOptimize(h);
         i = (i + 1) & 4095;
     }
@@ -72,7 +73,8 @@ void bm_moller(benchmark::State& state) {
     const Workload& w = workload();
     std::size_t i = 0, hits = 0;
     for (auto _ : state) {
-        const auto h = intersect_moller(w.rays[i], 0.0f, kInfinity, w.corners[3 * i], w.corners[3 * i + 1], w.corners[3 * i + 2]);
+        const auto h =
+            intersect_moller(w.rays[i], 0.0f, kInfinity, w.corners[3 * i], w.corners[3 * i + 1], w.corners[3 * i + 2]);
         hits += h.has_value();
         benchmark::DoNotOptimize(h);
         i = (i + 1) & 4095;

@@ -166,7 +166,9 @@ TEST_CASE("a grid of 100k coplanar triangles hit head-on and edge-on and in-plan
     Rng rng(3);
     for (int i = 0; i < 100; ++i) {
         // Head-on at integer (vertex) and half-integer (edge) coordinates, and at random points.
-        const float x = static_cast<float>(rng.uniform_u32(224)) + (i % 3 == 0 ? 0.0f : i % 3 == 1 ? 0.5f : rng.uniform());
+        const float x = static_cast<float>(rng.uniform_u32(224)) + (i % 3 == 0   ? 0.0f
+                                                                    : i % 3 == 1 ? 0.5f
+                                                                                 : rng.uniform());
         const float y = static_cast<float>(rng.uniform_u32(224)) + (i % 2 == 0 ? 0.0f : rng.uniform());
         rays.push_back(Ray{{x, y, 3.0f}, {0.0f, -0.0f, -1.0f}});
         rays.push_back(Ray{{x, y, -3.0f}, {-0.0f, 0.0f, 1.0f}});

@@ -1,7 +1,7 @@
 #include <rtlab/accel/kd_tree.hpp>
 #include <rtlab/accel/mesh_shape.hpp>
-#include <rtlab/geometry/instance.hpp>
 #include <rtlab/core/error.hpp>
+#include <rtlab/geometry/instance.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -88,7 +88,9 @@ TEST_CASE("interior nodes flag exactly their empty children and keep siblings in
     for (std::size_t i = 0; i < sphere.triangle_count(); ++i) input.bounds.push_back(sphere.triangle_bounds(i));
     for (KdStrategy s : {KdStrategy::sah, KdStrategy::sah_binned, KdStrategy::median, KdStrategy::midpoint}) {
         const KdTreeData tree = build_kd_tree(input, s);
-        auto empty_leaf = [&](std::uint32_t i) { return tree.nodes[i].is_leaf() && tree.nodes[i].primitive_count() == 0; };
+        auto empty_leaf = [&](std::uint32_t i) {
+            return tree.nodes[i].is_leaf() && tree.nodes[i].primitive_count() == 0;
+        };
         int flagged = 0, wrong = 0, odd = 0;
         std::vector<int> parents(tree.nodes.size(), 0);
         for (std::uint32_t i = 0; i < tree.nodes.size(); ++i) {
@@ -103,8 +105,8 @@ TEST_CASE("interior nodes flag exactly their empty children and keep siblings in
             if (n.empty_children() != expected) ++wrong;
             if (expected != 0) ++flagged;
         }
-        INFO(kd_strategy_name(s) << ": " << flagged << " interior nodes with an empty child, " << tree.stats.empty_leaves
-                                 << " empty leaves");
+        INFO(kd_strategy_name(s) << ": " << flagged << " interior nodes with an empty child, "
+                                 << tree.stats.empty_leaves << " empty leaves");
         CHECK(wrong == 0);
         CHECK(odd == 0);  // pairs start at even indices: 16-byte aligned, never split across cache lines
         CHECK(flagged == tree.stats.empty_leaves);  // an empty leaf is never the root here
@@ -157,8 +159,10 @@ TEST_CASE("a kd-tree over shapes of mixed kinds, itself a shape inside another t
     for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 6; ++j) {
             const Point3 c(2.0f * i, 2.0f * j, 0.0f);
-            if ((i + j) % 2) shapes.push_back(std::make_shared<TestSphere>(c, 0.7f, id++));
-            else shapes.push_back(std::make_shared<TestBox>(AABB{c - Vec3(0.5f), c + Vec3(0.5f)}, id++));
+            if ((i + j) % 2)
+                shapes.push_back(std::make_shared<TestSphere>(c, 0.7f, id++));
+            else
+                shapes.push_back(std::make_shared<TestBox>(AABB{c - Vec3(0.5f), c + Vec3(0.5f)}, id++));
         }
     const auto inner = std::make_shared<KdShapeTree>(shapes);
     // The tree of trees: the first tree is one primitive of the outer one, beside a far sphere.

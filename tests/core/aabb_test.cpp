@@ -171,8 +171,8 @@ TEST_CASE("slab test: origin inside and on the boundary", "[aabb]") {
 }
 
 TEST_CASE("slab test: tmin/tmax clipping and behind-the-origin boxes", "[aabb]") {
-    CHECK_FALSE(unit_box.intersect(Ray{{0, 0, 5}, {0, 0, 1}}));         // box behind
-    CHECK_FALSE(unit_box.intersect(Ray{{0, 0, -5}, {0, 0, 1}, 0, 3.9f})); // stops short
+    CHECK_FALSE(unit_box.intersect(Ray{{0, 0, 5}, {0, 0, 1}}));            // box behind
+    CHECK_FALSE(unit_box.intersect(Ray{{0, 0, -5}, {0, 0, 1}, 0, 3.9f}));  // stops short
     CHECK_FALSE(unit_box.intersect(Ray{{0, 0, -5}, {0, 0, 1}, 6.1f, kInf}));
     const auto exact = unit_box.intersect(Ray{{0, 0, -5}, {0, 0, 1}, 5.0f, 5.0f});  // tmin = tmax inside
     REQUIRE(exact);
@@ -203,10 +203,14 @@ TEST_CASE("slab test: huge and tiny boxes", "[aabb]") {
 TEST_CASE("slab test never misses a ray through the box centre (random)", "[aabb]") {
     // Rays from far away aimed at a point inside: rounding must never turn them into misses.
     std::uint32_t state = 7;
-    auto next = [&] { state = state * 1664525u + 1013904223u; return static_cast<float>(state >> 8) * 0x1p-24f; };
+    auto next = [&] {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) * 0x1p-24f;
+    };
     int misses = 0;
     for (int i = 0; i < 20000; ++i) {
-        const AABB box = AABB::from_points({next() * 100, next() * 100, next() * 100}, {next() * 100, next() * 100, next() * 100});
+        const AABB box =
+            AABB::from_points({next() * 100, next() * 100, next() * 100}, {next() * 100, next() * 100, next() * 100});
         const Point3 target = box.lo + Vec3(next(), next(), next()) * box.extent();
         const Point3 origin = Vec3(next() - 0.5f, next() - 0.5f, next() - 0.5f) * 1e4f;
         if (!box.intersect(Ray{origin, target - origin})) ++misses;

@@ -22,9 +22,7 @@ Image gradient(int w, int h, float scale) {
     return img;
 }
 
-void write_text(const std::filesystem::path& p, const std::string& s) {
-    std::ofstream(p, std::ios::binary) << s;
-}
+void write_text(const std::filesystem::path& p, const std::string& s) { std::ofstream(p, std::ios::binary) << s; }
 
 const auto dir = test::scratch_dir("core_image");
 }  // namespace

@@ -23,7 +23,8 @@ struct Cube final : Shape {
 
 Registry<Shape> make_registry() {
     Registry<Shape> r("shape");
-    r.add("ball", [](const Params& p) { return std::make_shared<Ball>(p.get_float("radius", 1.0f)); }, "a ball");
+    r.add(
+        "ball", [](const Params& p) { return std::make_shared<Ball>(p.get_float("radius", 1.0f)); }, "a ball");
     r.add("cube", [](const Params& p) { return std::make_shared<Cube>(p.get_float("side")); });
     return r;
 }

@@ -56,8 +56,10 @@ TEST_CASE("ascii PLY with a quad is fanned in place", "[ply]") {
 TEST_CASE("CRLF line ends and extra whitespace are accepted", "[ply]") {
     std::string crlf;
     for (char c : kSquareAscii) {
-        if (c == '\n') crlf += "\r\n";
-        else crlf += c;
+        if (c == '\n')
+            crlf += "\r\n";
+        else
+            crlf += c;
     }
     const TriangleMesh m = load_ply(write_file("crlf.ply", crlf));
     CHECK(m.triangle_count() == 2);
@@ -112,34 +114,49 @@ std::string binary_vertices_header(int vertices, int faces) {
 
 TEST_CASE("malformed PLY files give errors naming the file and the problem", "[ply]") {
     const std::string good_vertices = "0 0 0\n1 0 0\n0 1 0\n";
-    const std::string header3 = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                                "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const std::string header3 =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     const BadFile cases[] = {
         {"empty.ply", "", "empty file"},
         {"magic.ply", "plx\nformat ascii 1.0\nend_header\n", "not a PLY file"},
         {"noformat.ply", "ply\nelement vertex 0\nproperty float x\nend_header\n", "no format line"},
         {"badformat.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n", "line 2: unknown format"},
         {"noend.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", "before 'end_header'"},
-        {"badtype.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\nend_header\n", "line 4: unknown property type"},
+        {"badtype.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\nend_header\n",
+         "line 4: unknown property type"},
         {"keyword.ply", "ply\nformat ascii 1.0\nelephant vertex 1\nend_header\n", "line 3: unknown header keyword"},
-        {"negcount.ply", "ply\nformat ascii 1.0\nelement vertex -3\nproperty float x\nend_header\n", "invalid count '-3'"},
+        {"negcount.ply", "ply\nformat ascii 1.0\nelement vertex -3\nproperty float x\nend_header\n",
+         "invalid count '-3'"},
         {"orphan.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n", "property before any element"},
-        {"noxyz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n1 2\n", "lacks x, y or z"},
-        {"novertex.ply", "ply\nformat ascii 1.0\nelement thing 0\nproperty float x\nend_header\n", "no 'vertex' element"},
-        {"nolist.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
-                       "element face 0\nproperty int vertex_indices\nend_header\n", "no 'vertex_indices' list"},
-        {"floatcount.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
-                           "element face 0\nproperty list float int vertex_indices\nend_header\n", "list count type"},
-        {"absurd.ply", "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n",
+        {"noxyz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n1 2\n",
+         "lacks x, y or z"},
+        {"novertex.ply", "ply\nformat ascii 1.0\nelement thing 0\nproperty float x\nend_header\n",
+         "no 'vertex' element"},
+        {"nolist.ply",
+         "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+         "element face 0\nproperty int vertex_indices\nend_header\n",
+         "no 'vertex_indices' list"},
+        {"floatcount.ply",
+         "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+         "element face 0\nproperty list float int vertex_indices\nend_header\n",
+         "list count type"},
+        {"absurd.ply",
+         "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float "
+         "z\nend_header\n0 0 0\n",
          "more than the"},
-        {"absurdbin.ply", binary_vertices_header(1000000, 0) + std::string(24, '\0'), "header claims 1000000 'vertex' elements"},
+        {"absurdbin.ply", binary_vertices_header(1000000, 0) + std::string(24, '\0'),
+         "header claims 1000000 'vertex' elements"},
         {"shortascii.ply", header3 + "0 0 0\n1 0 0\n", "header claims 3 'vertex' elements, more than the 12 bytes"},
         {"truncascii.ply", header3 + "0 0 0\n1 0 0\n0            \n", "truncated data in element 'vertex' #2"},
-        {"truncbin.ply", binary_vertices_header(1, 1) + std::string(12, '\0') + std::string("\x03\x00\x00", 3), "truncated data in element 'face' #0"},
-        {"badnumber.ply", header3 + "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n", "line 11: element 'vertex' #1: bad number 'zero'"},
+        {"truncbin.ply", binary_vertices_header(1, 1) + std::string(12, '\0') + std::string("\x03\x00\x00", 3),
+         "truncated data in element 'face' #0"},
+        {"badnumber.ply", header3 + "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n",
+         "line 11: element 'vertex' #1: bad number 'zero'"},
         {"nan.ply", header3 + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "element 'vertex' #1: non-finite vertex coordinate"},
         {"inf.ply", header3 + "0 0 0\n1 0 inf\n0 1 0\n3 0 1 2\n", "non-finite vertex coordinate"},
-        {"range.ply", header3 + good_vertices + "3 0 1 3\n", "element 'face' #0: vertex index 3 out of range (3 vertices)"},
+        {"range.ply", header3 + good_vertices + "3 0 1 3\n",
+         "element 'face' #0: vertex index 3 out of range (3 vertices)"},
         {"negindex.ply", header3 + good_vertices + "3 0 -1 2\n", "vertex index -1 out of range"},
         {"neglist.ply", header3 + good_vertices + "-3 0 1 2\n", "invalid list length"},
         {"fractional.ply", header3 + good_vertices + "3 0 1.5 2\n", "out of range"},

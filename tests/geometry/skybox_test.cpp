@@ -5,8 +5,9 @@
 using namespace rtlab;
 
 TEST_CASE("skybox faces for the six axes", "[skybox]") {
-    const std::pair<Vec3, CubeFace> axes[] = {{{1, 0, 0}, CubeFace::px}, {{-1, 0, 0}, CubeFace::nx}, {{0, 1, 0}, CubeFace::py},
-                                              {{0, -1, 0}, CubeFace::ny}, {{0, 0, 1}, CubeFace::pz}, {{0, 0, -1}, CubeFace::nz}};
+    const std::pair<Vec3, CubeFace> axes[] = {{{1, 0, 0}, CubeFace::px}, {{-1, 0, 0}, CubeFace::nx},
+                                              {{0, 1, 0}, CubeFace::py}, {{0, -1, 0}, CubeFace::ny},
+                                              {{0, 0, 1}, CubeFace::pz}, {{0, 0, -1}, CubeFace::nz}};
     for (const auto& [d, face] : axes) {
         const auto c = skybox_lookup(d);
         REQUIRE(c);

@@ -20,17 +20,17 @@ float even3(const Texture& t, float x, float y, float z) { return t.eval(Texture
 TEST_CASE("checker parity at tile borders belongs to the tile above and holds for negative uv", "[checker]") {
     // 4 tiles per unit in u, 2 in v: tile (floor(4u), floor(2v)).
     const auto t = registry().create("checker", Params{}.set("tiles_u", 4.0).set("tiles_v", 2.0));
-    CHECK(even(*t, 0.0f, 0.0f) == 1.0f);          // (0, 0)
-    CHECK(even(*t, 0.25f, 0.0f) == 0.0f);         // exactly on the border: (1, 0)
+    CHECK(even(*t, 0.0f, 0.0f) == 1.0f);                         // (0, 0)
+    CHECK(even(*t, 0.25f, 0.0f) == 0.0f);                        // exactly on the border: (1, 0)
     CHECK(even(*t, std::nextafter(0.25f, 0.0f), 0.0f) == 1.0f);  // just below: (0, 0)
-    CHECK(even(*t, 0.25f, 0.5f) == 1.0f);         // (1, 1)
-    CHECK(even(*t, 0.0f, 0.5f) == 0.0f);          // (0, 1)
-    CHECK(even(*t, -0.25f, 0.0f) == 0.0f);        // on a negative border: (-1, 0)
-    CHECK(even(*t, -0.01f, 0.0f) == 0.0f);        // (-1, 0)
-    CHECK(even(*t, -0.26f, 0.0f) == 1.0f);        // (-2, 0)
-    CHECK(even(*t, -0.01f, -0.01f) == 1.0f);      // (-1, -1)
-    CHECK(even(*t, -0.5f, -0.5f) == 0.0f);        // (-2, -1)
-    CHECK(even(*t, 0.3f, -1.0f) == 0.0f);         // (1, -2): odd
+    CHECK(even(*t, 0.25f, 0.5f) == 1.0f);                        // (1, 1)
+    CHECK(even(*t, 0.0f, 0.5f) == 0.0f);                         // (0, 1)
+    CHECK(even(*t, -0.25f, 0.0f) == 0.0f);                       // on a negative border: (-1, 0)
+    CHECK(even(*t, -0.01f, 0.0f) == 0.0f);                       // (-1, 0)
+    CHECK(even(*t, -0.26f, 0.0f) == 1.0f);                       // (-2, 0)
+    CHECK(even(*t, -0.01f, -0.01f) == 1.0f);                     // (-1, -1)
+    CHECK(even(*t, -0.5f, -0.5f) == 0.0f);                       // (-2, -1)
+    CHECK(even(*t, 0.3f, -1.0f) == 0.0f);                        // (1, -2): odd
     // Far out the parity still alternates tile by tile: 2^20 tiles in is (2^20, 0), even; one more is odd.
     CHECK(even(*t, 262144.0f, 0.1f) == 1.0f);
     CHECK(even(*t, 262144.25f, 0.1f) == 0.0f);
@@ -48,7 +48,7 @@ TEST_CASE("checker counts tiles per unit and defaults tiles_v to tiles_u", "[che
         changes += e != last ? 1 : 0;
         last = e;
     }
-    CHECK(changes == 2);  // 3 tiles across [0, 1]
+    CHECK(changes == 2);                                 // 3 tiles across [0, 1]
     CHECK(even(*t, 0.1f, 1.0f / 3.0f + 1e-4f) == 0.0f);  // v also has 3 tiles per unit
     const auto d = registry().create("checker", Params{});
     CHECK(even(*d, 0.124f, 0.0f) == 1.0f);  // default 8 per unit
@@ -61,19 +61,19 @@ TEST_CASE("checker selects between two nested textures", "[checker]") {
     p.set("tiles_u", 1.0).set("color2", Params::List{0.0, 0.0, 1.0});
     p.set_object<Texture>("color1", inner);
     const auto t = registry().create("checker", p);
-    CHECK(t->eval(TextureLookup{{0.01f, 0.01f}, {}, {}}) == RGB(1.0f));    // outer even, inner (0, 0) even
-    CHECK(t->eval(TextureLookup{{0.03f, 0.01f}, {}, {}}) == RGB(0.0f));    // outer even, inner (1, 0) odd
+    CHECK(t->eval(TextureLookup{{0.01f, 0.01f}, {}, {}}) == RGB(1.0f));     // outer even, inner (0, 0) even
+    CHECK(t->eval(TextureLookup{{0.03f, 0.01f}, {}, {}}) == RGB(0.0f));     // outer even, inner (1, 0) odd
     CHECK(t->eval(TextureLookup{{1.03f, 0.01f}, {}, {}}) == RGB(0, 0, 1));  // outer odd: colour 2
 }
 
 TEST_CASE("checker3d parity in object space including faces and negative coordinates", "[checker]") {
     const auto t = registry().create("checker3d", Params{}.set("tiles", 2.0));  // cells of 0.5
-    CHECK(even3(*t, 0.1f, 0.1f, 0.1f) == 1.0f);    // (0, 0, 0)
-    CHECK(even3(*t, 0.5f, 0.1f, 0.1f) == 0.0f);    // on the face x = 0.5: (1, 0, 0)
-    CHECK(even3(*t, 0.5f, 0.5f, 0.1f) == 1.0f);    // (1, 1, 0)
-    CHECK(even3(*t, 0.5f, 0.5f, 0.5f) == 0.0f);    // (1, 1, 1)
-    CHECK(even3(*t, -0.1f, 0.1f, 0.1f) == 0.0f);   // (-1, 0, 0)
-    CHECK(even3(*t, -0.1f, -0.1f, -0.1f) == 0.0f); // (-1, -1, -1)
+    CHECK(even3(*t, 0.1f, 0.1f, 0.1f) == 1.0f);                                 // (0, 0, 0)
+    CHECK(even3(*t, 0.5f, 0.1f, 0.1f) == 0.0f);                                 // on the face x = 0.5: (1, 0, 0)
+    CHECK(even3(*t, 0.5f, 0.5f, 0.1f) == 1.0f);                                 // (1, 1, 0)
+    CHECK(even3(*t, 0.5f, 0.5f, 0.5f) == 0.0f);                                 // (1, 1, 1)
+    CHECK(even3(*t, -0.1f, 0.1f, 0.1f) == 0.0f);                                // (-1, 0, 0)
+    CHECK(even3(*t, -0.1f, -0.1f, -0.1f) == 0.0f);                              // (-1, -1, -1)
     CHECK(even3(*t, -0.5f, -0.1f, 0.0f) == 1.0f);  // x = -0.5 is on a face, cell -1: (-1, -1, 0)
     CHECK(even3(*t, -0.6f, -0.1f, 0.0f) == 0.0f);  // (-2, -1, 0)
     // uv is ignored.

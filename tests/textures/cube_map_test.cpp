@@ -77,13 +77,11 @@ TEST_CASE("cube face coordinates follow the OpenGL table", "[cubemap]") {
         CubeFace face;
         float s, t;
     };
-    for (const Case& k : {Case{{1.0f, 0.5f, -0.5f}, CubeFace::px, 0.75f, 0.25f},
-                          Case{{-1.0f, 0.5f, -0.5f}, CubeFace::nx, 0.25f, 0.25f},
-                          Case{{0.5f, 1.0f, -0.5f}, CubeFace::py, 0.75f, 0.25f},
-                          Case{{0.5f, -1.0f, -0.5f}, CubeFace::ny, 0.75f, 0.75f},
-                          Case{{0.5f, 0.5f, 1.0f}, CubeFace::pz, 0.75f, 0.25f},
-                          Case{{0.5f, 0.5f, -1.0f}, CubeFace::nz, 0.25f, 0.25f},
-                          Case{{2.0f, -1.0f, 1.0f}, CubeFace::px, 0.25f, 0.75f}}) {
+    for (const Case& k :
+         {Case{{1.0f, 0.5f, -0.5f}, CubeFace::px, 0.75f, 0.25f}, Case{{-1.0f, 0.5f, -0.5f}, CubeFace::nx, 0.25f, 0.25f},
+          Case{{0.5f, 1.0f, -0.5f}, CubeFace::py, 0.75f, 0.25f}, Case{{0.5f, -1.0f, -0.5f}, CubeFace::ny, 0.75f, 0.75f},
+          Case{{0.5f, 0.5f, 1.0f}, CubeFace::pz, 0.75f, 0.25f}, Case{{0.5f, 0.5f, -1.0f}, CubeFace::nz, 0.25f, 0.25f},
+          Case{{2.0f, -1.0f, 1.0f}, CubeFace::px, 0.25f, 0.75f}}) {
         INFO("d = " << k.d.x << " " << k.d.y << " " << k.d.z);
         const CubeFaceCoord c = cube_face_coord(k.d);
         CHECK(c.face == k.face);
@@ -124,7 +122,8 @@ TEST_CASE("the 12 edge directions give the mean of the two faces and corners the
         for (float sy : {1.0f, -1.0f})
             for (float sz : {1.0f, -1.0f}) {
                 const RGB expected = (face_colour(index(face_of(0, sx))) + face_colour(index(face_of(1, sy))) +
-                                      face_colour(index(face_of(2, sz)))) * (1.0f / 3.0f);
+                                      face_colour(index(face_of(2, sz)))) *
+                                     (1.0f / 3.0f);
                 const RGB got = map.sample({sx, sy, sz});
                 CHECK(got.r == Approx(expected.r).epsilon(1e-5));
                 CHECK(got.g == Approx(expected.g).epsilon(1e-5));
@@ -152,8 +151,7 @@ TEST_CASE("a cube map of random texels is continuous across every edge", "[cubem
             ++samples;
         }
     }
-    INFO("worst jump across an edge " << worst << ", mean difference a fifth of a face apart "
-                                      << typical / samples);
+    INFO("worst jump across an edge " << worst << ", mean difference a fifth of a face apart " << typical / samples);
     CHECK(worst < 1e-3f);
     CHECK(typical / samples > 0.05f);
 }
@@ -206,7 +204,8 @@ TEST_CASE("cube map size errors name the face or the file", "[cubemap]") {
     faces[3] = Image(8, 8);
     CHECK_THROWS_WITH(CubeMapTexture(faces), Contains("face 'ny'") && Contains("same size"));
     write_image(Image(10, 6), dir / "bad_cross.pfm");
-    CHECK_THROWS_WITH(CubeMapTexture::load_cross(dir / "bad_cross.pfm"), Contains("bad_cross.pfm") && Contains("4N x 3N"));
+    CHECK_THROWS_WITH(CubeMapTexture::load_cross(dir / "bad_cross.pfm"),
+                      Contains("bad_cross.pfm") && Contains("4N x 3N"));
     const TextureRegistry r = make_texture_registry();
     CHECK_THROWS_WITH(r.create("cubemap", Params{}.set("folder", (dir / "nowhere").string())),
                       Contains("texture 'cubemap'") && Contains("px.jpg"));

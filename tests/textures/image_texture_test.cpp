@@ -79,9 +79,9 @@ TEST_CASE("wrap modes repeat clamp and mirror pick the texels beyond the edges",
     // Bilinear across the u = 0 edge (x = -0.5 between texels -1 and 0): repeat blends p2 and p0.
     const ImageTexture repeat_bl(img, {.wrap = WrapMode::repeat});
     const ImageTexture mirror_bl(img, {.wrap = WrapMode::mirror});
-    CHECK(red(repeat_bl, 0.0f, 0.5f) == Approx(2.0f));   // (3 + 1) / 2
-    CHECK(red(repeat_bl, 1.0f, 0.5f) == Approx(2.0f));   // the same place one period on
-    CHECK(red(mirror_bl, 0.0f, 0.5f) == Approx(1.0f));   // mirrored: p0 beside p0
+    CHECK(red(repeat_bl, 0.0f, 0.5f) == Approx(2.0f));  // (3 + 1) / 2
+    CHECK(red(repeat_bl, 1.0f, 0.5f) == Approx(2.0f));  // the same place one period on
+    CHECK(red(mirror_bl, 0.0f, 0.5f) == Approx(1.0f));  // mirrored: p0 beside p0
     CHECK(red(mirror_bl, 1.0f, 0.5f) == Approx(3.0f));
     // Repeat is periodic far out, and huge or non-finite uv do not crash.
     CHECK(red(repeat_bl, 1000.25f, 0.5f) == Approx(red(repeat_bl, 0.25f, 0.5f)).epsilon(1e-4));
@@ -114,7 +114,8 @@ TEST_CASE("8-bit images are decoded from sRGB unless told they are linear", "[im
     write_image(Image(4, 4, RGB(0.2f)), path);  // stored as the sRGB code of 0.2
     const TextureRegistry r = make_texture_registry();
     const auto srgb = r.create("image", Params{}.set("filename", path.string()));
-    const auto linear = r.create("image", Params{}.set("filename", path.string()).set("encoding", std::string("linear")));
+    const auto linear =
+        r.create("image", Params{}.set("filename", path.string()).set("encoding", std::string("linear")));
     CHECK(red(*srgb, 0.3f, 0.3f) == Approx(0.2f).margin(0.003f));
     CHECK(red(*linear, 0.3f, 0.3f) == Approx(srgb_encode(0.2f)).margin(0.003f));  // about 0.484
 }

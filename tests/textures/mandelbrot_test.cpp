@@ -106,10 +106,10 @@ TEST_CASE("mandelbrot texture maps the uv window and colours inside and outside"
     float worst_smooth = 0.0f, worst_stepped = 0.0f;
     for (int k = 0; k < 2000; ++k) {
         const float u0 = 0.95f + 0.05f * k / 2000.0f, u1 = 0.95f + 0.05f * (k + 1) / 2000.0f;
-        worst_smooth = std::max(worst_smooth, std::abs(smooth->eval({{u1, 0.5f}, {}, {}}).r -
-                                                       smooth->eval({{u0, 0.5f}, {}, {}}).r));
-        worst_stepped = std::max(worst_stepped, std::abs(stepped->eval({{u1, 0.5f}, {}, {}}).r -
-                                                         stepped->eval({{u0, 0.5f}, {}, {}}).r));
+        worst_smooth = std::max(worst_smooth,
+                                std::abs(smooth->eval({{u1, 0.5f}, {}, {}}).r - smooth->eval({{u0, 0.5f}, {}, {}}).r));
+        worst_stepped = std::max(
+            worst_stepped, std::abs(stepped->eval({{u1, 0.5f}, {}, {}}).r - stepped->eval({{u0, 0.5f}, {}, {}}).r));
     }
     CHECK(worst_smooth < 0.01f);
     CHECK(worst_stepped > 0.02f);

@@ -110,9 +110,9 @@ TEST_CASE("Perlin noise value and gradient are continuous across lattice cell bo
         };
         check(fx), check(fy), check(fz), check(f2x), check(f2y);
     }
-    CHECK(largest_slope > 0.5);       // the slopes compared are not all zero
-    CHECK(worst_slope_gap < 0.02);    // one-sided slopes agree: no kink at cell borders
-    CHECK(worst_value_gap < 1e-5);    // and no jump
+    CHECK(largest_slope > 0.5);     // the slopes compared are not all zero
+    CHECK(worst_slope_gap < 0.02);  // one-sided slopes agree: no kink at cell borders
+    CHECK(worst_value_gap < 1e-5);  // and no jump
 }
 
 TEST_CASE("simplex noise has no jumps at simplex or cell borders", "[noise]") {

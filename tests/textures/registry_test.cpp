@@ -23,10 +23,13 @@ private:
 };
 
 void register_stripes(TextureRegistry& r) {
-    r.add("stripes", [](const Params& p) -> std::shared_ptr<Texture> {
-        return std::make_shared<StripesTexture>(p.get_float("period", 0.5f), p.get_rgb("a", RGB(1.0f)),
-                                                p.get_rgb("b", RGB(0.0f)));
-    }, "stripes along u. period (default 0.5); a (default 1); b (default 0)");
+    r.add(
+        "stripes",
+        [](const Params& p) -> std::shared_ptr<Texture> {
+            return std::make_shared<StripesTexture>(p.get_float("period", 0.5f), p.get_rgb("a", RGB(1.0f)),
+                                                    p.get_rgb("b", RGB(0.0f)));
+        },
+        "stripes along u. period (default 0.5); a (default 1); b (default 0)");
 }
 
 TextureLookup at_uv(float u, float v) {
@@ -38,8 +41,8 @@ TextureLookup at_uv(float u, float v) {
 
 TEST_CASE("every built-in texture is registered with a documented parameter list", "[registry]") {
     const TextureRegistry r = make_texture_registry();
-    const std::vector<std::string> expected{"checker", "checker3d", "cubemap", "image",
-                                            "mandelbrot", "perlin", "simplex", "solid"};
+    const std::vector<std::string> expected{"checker",    "checker3d", "cubemap", "image",
+                                            "mandelbrot", "perlin",    "simplex", "solid"};
     CHECK(r.names() == expected);
     CHECK(r.category() == "texture");
     // Each doc names the parameters with their defaults.
@@ -75,8 +78,8 @@ TEST_CASE("a texture defined outside the library registers and nests like a buil
     p.set_object<Texture>("color1", stripes);
     const auto checker = r.create("checker", p);
     CHECK(checker->eval(at_uv(0.1f, 0.5f)) == RGB(0.0f, 1.0f, 0.0f));  // tile (0, 0): stripes, first stripe
-    CHECK(checker->eval(at_uv(0.3f, 0.5f)) == RGB(0.0f));               // tile (0, 0): stripes, second stripe
-    CHECK(checker->eval(at_uv(1.1f, 0.5f)) == RGB(0.5f));               // tile (1, 0): colour 2
+    CHECK(checker->eval(at_uv(0.3f, 0.5f)) == RGB(0.0f));              // tile (0, 0): stripes, second stripe
+    CHECK(checker->eval(at_uv(1.1f, 0.5f)) == RGB(0.5f));              // tile (1, 0): colour 2
 
     CHECK_THROWS_WITH(r.add("stripes", [](const Params&) { return std::shared_ptr<Texture>{}; }),
                       Contains("already registered"));
@@ -103,22 +106,26 @@ TEST_CASE("parameter errors name the texture and the parameter", "[registry]") {
     CHECK_THROWS_WITH(
         r.create("simplex", Params{}.set("color2", Params::List{0.5, 0.5})),
         Contains("texture 'simplex': parameter 'color2' must be a colour") && Contains("a list of 2 numbers"));
-    CHECK_THROWS_WITH(r.create("mandelbrot", Params{}.set("escape_radius", 1.5)), Contains("'escape_radius' must be >= 2"));
+    CHECK_THROWS_WITH(r.create("mandelbrot", Params{}.set("escape_radius", 1.5)),
+                      Contains("'escape_radius' must be >= 2"));
     CHECK_THROWS_WITH(r.create("mandelbrot", Params{}.set("iterations", 0.0)), Contains("'iterations' must be in [1"));
     CHECK_THROWS_WITH(r.create("mandelbrot", Params{}.set("center", Params::List{1, 2, 3})), Contains("'center'"));
-    CHECK_THROWS_WITH(r.create("perlin", Params{}.set("pattern", std::string("wood"))),
-                      Contains("texture 'perlin'") && Contains("'pattern' must be one of noise, fbm, turbulence, marble"));
+    CHECK_THROWS_WITH(
+        r.create("perlin", Params{}.set("pattern", std::string("wood"))),
+        Contains("texture 'perlin'") && Contains("'pattern' must be one of noise, fbm, turbulence, marble"));
     CHECK_THROWS_WITH(r.create("simplex", Params{}.set("dimension", 4.0)), Contains("'dimension' must be in [2, 3]"));
     CHECK_THROWS_WITH(r.create("perlin", Params{}.set("octaves", 2.5)), Contains("'octaves' must be an integer"));
-    CHECK_THROWS_WITH(r.create("solid", Params{}.set("color", Params::List{1, 2})), Contains("'color' must be a colour"));
+    CHECK_THROWS_WITH(r.create("solid", Params{}.set("color", Params::List{1, 2})),
+                      Contains("'color' must be a colour"));
     CHECK_THROWS_WITH(r.create("solid", Params{}.set("colour", 1.0)), Contains("unused parameter(s) 'colour'"));
     CHECK_THROWS_WITH(r.create("solid", Params{}.set("color", 1e300)), Contains("'color' must be finite"));
-    CHECK_THROWS_WITH(r.create("image", Params{}), Contains("texture 'image'") && Contains("missing parameter 'filename'"));
-    CHECK_THROWS_WITH(r.create("image", Params{}.set("filename", std::string("x.png")).set("wrap", std::string("tile"))),
-                      Contains("'wrap' must be one of repeat, clamp, mirror"));
+    CHECK_THROWS_WITH(r.create("image", Params{}),
+                      Contains("texture 'image'") && Contains("missing parameter 'filename'"));
+    CHECK_THROWS_WITH(
+        r.create("image", Params{}.set("filename", std::string("x.png")).set("wrap", std::string("tile"))),
+        Contains("'wrap' must be one of repeat, clamp, mirror"));
     CHECK_THROWS_WITH(r.create("cubemap", Params{}), Contains("texture 'cubemap'") && Contains("exactly one"));
-    CHECK_THROWS_WITH(r.create("cubemap", Params{}.set("px", std::string("a.png"))),
-                      Contains("'nx' is missing"));
+    CHECK_THROWS_WITH(r.create("cubemap", Params{}.set("px", std::string("a.png"))), Contains("'nx' is missing"));
     CHECK_THROWS_WITH(r.create("nosuch", Params{}), Contains("unknown texture 'nosuch'") && Contains("checker"));
 }
 

@@ -129,6 +129,7 @@ TEST_CASE("the registry names and checks operators and parameters", "[tonemap]")
     CHECK_THROWS_WITH(r.create("drago", Params{}), Contains("unknown tone operator 'drago'") && Contains("reinhard"));
     CHECK_THROWS_WITH(r.create("reinhard", Params{}.set("kee", 0.2)), Contains("'kee'"));
     CHECK_THROWS_WITH(r.create("reinhard", Params{}.set("key", -1.0)), Contains("key must be positive"));
-    CHECK_THROWS_WITH(r.create("ward", Params{}.set("ldmax", std::string("bright"))), Contains("'ldmax' must be a number"));
+    CHECK_THROWS_WITH(r.create("ward", Params{}.set("ldmax", std::string("bright"))),
+                      Contains("'ldmax' must be a number"));
     CHECK_THROWS_WITH(r.create("exposure", Params{}.set("stops", 1000.0)), Contains("stops must lie in"));
 }

@@ -27,7 +27,8 @@ std::unique_ptr<TriangleAccelerator> make_accelerator(std::string_view method, c
     if (method == "brute") return accel::make_brute_force(mesh, options);
     if (method == "embree") {
         if (auto embree = accel::make_embree(mesh, options)) return embree;
-        throw Error("method 'embree' is not available: rtlab was built without Embree 3 (apt-get install libembree-dev)");
+        throw Error(
+            "method 'embree' is not available: rtlab was built without Embree 3 (apt-get install libembree-dev)");
     }
     std::string known;
     for (const auto& m : accelerator_methods()) known += (known.empty() ? "" : ", ") + m;

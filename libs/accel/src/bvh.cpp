@@ -14,9 +14,9 @@ namespace rtlab::accel {
 namespace {
 
 struct BvhNode {
-    AABB box;                     // 24 bytes
+    AABB box;                       // 24 bytes
     std::uint32_t offset_or_right;  // leaf: first primitive; interior: right child (left is next)
-    std::uint16_t count;          // 0 for interior
+    std::uint16_t count;            // 0 for interior
     std::uint16_t axis;
 };
 static_assert(sizeof(BvhNode) == 32);
@@ -31,8 +31,7 @@ constexpr int kStackSize = 256;
 class Bvh final : public TriangleAccelerator {
 public:
     Bvh(const TriangleMesh& mesh, const BuildOptions& options)
-        : m_start(std::chrono::steady_clock::now()),
-          m_triangles(mesh, options.triangle_test, build_tree(mesh)) {
+        : m_start(std::chrono::steady_clock::now()), m_triangles(mesh, options.triangle_test, build_tree(mesh)) {
         m_stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
         m_stats.nodes = static_cast<std::int64_t>(m_nodes.size());
         m_stats.bytes = static_cast<std::int64_t>(m_nodes.size() * sizeof(BvhNode) + m_triangles.bytes());
@@ -41,8 +40,10 @@ public:
         const float root_area = m_nodes.empty() ? 1.0f : m_nodes[0].box.surface_area();
         for (const auto& n : m_nodes) {
             const double p = root_area > 0 ? n.box.surface_area() / root_area : 0.0;
-            if (n.count > 0) ++leaves, prims += n.count, cost += p * 1.5 * n.count;
-            else cost += p * 1.0;
+            if (n.count > 0)
+                ++leaves, prims += n.count, cost += p * 1.5 * n.count;
+            else
+                cost += p * 1.0;
         }
         m_stats.leaves = leaves;
         m_stats.empty_leaves = 0;
@@ -138,17 +139,19 @@ private:
             const float cost = 1.0f + 1.5f * inv_area * (left.surface_area() * left_n + right_area[b] * right_n[b]);
             if (cost < best_cost) best_cost = cost, best_split = b;
         }
-        if (depth >= kMedianDepth) best_split = -1;
-        else if (best_split < 0 && n <= 65535) return make_leaf();
+        if (depth >= kMedianDepth)
+            best_split = -1;
+        else if (best_split < 0 && n <= 65535)
+            return make_leaf();
         std::size_t mid;
         if (best_split < 0) {
             mid = first + n / 2;
             std::nth_element(items.begin() + first, items.begin() + mid, items.begin() + last,
                              [&](const Item& a, const Item& b) { return a.centre[axis] < b.centre[axis]; });
         } else {
-            mid = static_cast<std::size_t>(
-                std::partition(items.begin() + first, items.begin() + last, [&](const Item& it) { return bin_of(it) < best_split; }) -
-                items.begin());
+            mid = static_cast<std::size_t>(std::partition(items.begin() + first, items.begin() + last,
+                                                          [&](const Item& it) { return bin_of(it) < best_split; }) -
+                                           items.begin());
         }
         m_nodes[index].axis = static_cast<std::uint16_t>(axis);
         build(items, first, mid, depth + 1);
@@ -191,8 +194,14 @@ private:
                     const float tl = box_ray.enter(m_nodes[left].box, closest);
                     const float tr = box_ray.enter(m_nodes[right].box, closest);
                     if (tl == kInfinity && tr == kInfinity) break;
-                    if (tl == kInfinity) { index = right; continue; }
-                    if (tr == kInfinity) { index = left; continue; }
+                    if (tl == kInfinity) {
+                        index = right;
+                        continue;
+                    }
+                    if (tr == kInfinity) {
+                        index = left;
+                        continue;
+                    }
                     // Both: descend into the nearer, keep the farther for later.
                     if (tl <= tr) {
                         stack[top++] = {right, tr};

@@ -27,12 +27,12 @@ public:
         m_scene = rtcNewScene(m_device);
         rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
         RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                     3 * sizeof(float), mesh.vertex_count()));
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertex_count()));
         for (std::size_t i = 0; i < mesh.vertex_count(); ++i)
             for (int k = 0; k < 3; ++k) vertices[3 * i + k] = mesh.positions[i][k];
-        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                       3 * sizeof(unsigned), mesh.triangle_count()));
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangle_count()));
         for (std::size_t i = 0; i < mesh.triangle_count(); ++i)
             for (int k = 0; k < 3; ++k) indices[3 * i + k] = mesh.triangles[i][k];
         rtcCommitGeometry(geometry);
@@ -59,7 +59,8 @@ public:
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(m_scene, &context, &rh);
-        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || !(rh.ray.tfar > ray.tmin && rh.ray.tfar < ray.tmax)) return false;
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || !(rh.ray.tfar > ray.tmin && rh.ray.tfar < ray.tmax))
+            return false;
         hit = MeshHit{rh.ray.tfar, rh.hit.primID, rh.hit.u, rh.hit.v};
         return true;
     }

@@ -34,8 +34,10 @@ int leaf_width(int requested) {
 
 class KdMeshAccelerator final : public TriangleAccelerator {
 public:
-    KdMeshAccelerator(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options, const KdCostModel& cost)
-        : m_name(kd_strategy_name(strategy)), m_tree(build(strategy, mesh, options, cost)),
+    KdMeshAccelerator(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options,
+                      const KdCostModel& cost)
+        : m_name(kd_strategy_name(strategy)),
+          m_tree(build(strategy, mesh, options, cost)),
           m_packets(options.triangle_test, leaf_width(options.leaf_width)) {
         lay_out_leaves(mesh);
         m_tree.stats.bytes = static_cast<std::int64_t>(m_tree.nodes.size() * sizeof(KdNode) + m_packets.bytes());
@@ -96,8 +98,9 @@ private:
             const std::uint32_t count = node.primitive_count();
             const std::uint32_t one = node.primitive_offset();
             const std::span<const std::uint32_t> triangles =
-                count == 1 ? std::span<const std::uint32_t>(&one, 1)
-                           : std::span<const std::uint32_t>(m_tree.primitive_indices.data() + node.primitive_offset(), count);
+                count == 1
+                    ? std::span<const std::uint32_t>(&one, 1)
+                    : std::span<const std::uint32_t>(m_tree.primitive_indices.data() + node.primitive_offset(), count);
             const std::uint32_t first = m_packets.add_leaf(mesh, triangles);
             node = KdNode::leaf(m_packets.packets_for(count), first);
         }

@@ -121,8 +121,19 @@ private:
         auto row = [&](int r, float x) { block[static_cast<std::size_t>(m_width * r) + lane] = x; };
         if (m_test == TriangleTest::plane) {
             const PlaneTriangle p(p0, p1, p2);
-            const float values[13] = {p.normal.x, p.normal.y, p.normal.z, p.offset, p.p0x, p.p0y, p.e1x, p.e1y,
-                                      p.e2x, p.e2y, p.inv_det, static_cast<float>(p.ax), static_cast<float>(p.ay)};
+            const float values[13] = {p.normal.x,
+                                      p.normal.y,
+                                      p.normal.z,
+                                      p.offset,
+                                      p.p0x,
+                                      p.p0y,
+                                      p.e1x,
+                                      p.e1y,
+                                      p.e2x,
+                                      p.e2y,
+                                      p.inv_det,
+                                      static_cast<float>(p.ax),
+                                      static_cast<float>(p.ay)};
             for (int r = 0; r < 13; ++r) row(r, values[r]);
             return;
         }
@@ -210,7 +221,8 @@ template <int W>
 /// c[axis] lane by lane, for axis numbers 0, 1, 2 stored as floats (the plane test's kept axes differ per
 /// triangle).
 template <int W>
-[[gnu::always_inline]] inline typename Lanes<W>::F pick_axis(const typename Lanes<W>::F& axis, const typename Lanes<W>::F* c) {
+[[gnu::always_inline]] inline typename Lanes<W>::F pick_axis(const typename Lanes<W>::F& axis,
+                                                             const typename Lanes<W>::F* c) {
     using I = typename Lanes<W>::I;
     const I is0 = axis == splat<W>(0.0f), is1 = axis == splat<W>(1.0f);
     return is0 ? c[0] : (is1 ? c[1] : c[2]);
@@ -274,7 +286,8 @@ template <TriangleTest Test, int W>
                 v_out = w * inv;
             }
         }
-        if (redo) [[unlikely]] bits = redo_exact<W>(r, p, tmax, redo, bits, t, u_out, v_out);
+        if (redo) [[unlikely]]
+            bits = redo_exact<W>(r, p, tmax, redo, bits, t, u_out, v_out);
         return bits;
     } else if constexpr (Test == TriangleTest::moller) {
         const Ray& ray = r.ray;
@@ -330,7 +343,8 @@ template <TriangleTest Test, int W>
 /// lowers closest and fills hit (mesh triangle index). AnyHit: true at the first hit.
 template <TriangleTest Test, bool AnyHit, int W>
 [[gnu::always_inline]] inline bool test_packets(const TrianglePackets& packets, const PacketRay<Test>& r,
-                                                std::uint32_t first, std::uint32_t count, float& closest, MeshHit& hit) {
+                                                std::uint32_t first, std::uint32_t count, float& closest,
+                                                MeshHit& hit) {
     // The leaf's packets are one contiguous run, usually not in cache: ask for all of its lines at once
     // rather than one miss after another.
     const char* begin = reinterpret_cast<const char*>(packets.packet(first));
@@ -358,8 +372,8 @@ template <TriangleTest Test, bool AnyHit, int W>
 /// AVX2 without FMA, so every lane still rounds as the scalar test does.
 template <TriangleTest Test, bool AnyHit>
 [[gnu::target("avx2"), gnu::noinline]] bool test_packets_avx2(const TrianglePackets& packets, const PacketRay<Test>& r,
-                                                             std::uint32_t first, std::uint32_t count, float& closest,
-                                                             MeshHit& hit) {
+                                                              std::uint32_t first, std::uint32_t count, float& closest,
+                                                              MeshHit& hit) {
     return test_packets<Test, AnyHit, 8>(packets, r, first, count, closest, hit);
 }
 #endif

@@ -3,8 +3,8 @@
 #include <rtlab/accel/kd_cost_model.hpp>
 #include <rtlab/core/aabb.hpp>
 
-#include <cstdint>
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -48,7 +48,8 @@ struct Event {
 void add_events(const AABB& box, std::uint32_t slot, std::array<std::vector<Event>, 3>& events);
 void sort_events(std::array<std::vector<Event>, 3>& events);
 /// The best SAH split from sorted events of n primitives; a leaf (axis < 0) when none beats it.
-Split sweep_sah(const std::array<std::vector<Event>, 3>& events, std::size_t n, const AABB& box, const KdCostModel& cost);
+Split sweep_sah(const std::array<std::vector<Event>, 3>& events, std::size_t n, const AABB& box,
+                const KdCostModel& cost);
 Split find_split_binned(std::span<const Prim> prims, const AABB& box, const KdCostModel& cost);
 Split find_split_naive(std::span<const Prim> prims, const AABB& box, const KdCostModel& cost);
 Split find_split_median(std::span<const Prim> prims, const AABB& box, int depth);

@@ -14,7 +14,8 @@ Split find_split_naive(std::span<const Prim> prims, const AABB& box, const KdCos
                 if (!(position > box.lo[axis] && position < box.hi[axis])) continue;
                 std::size_t n_left = 0, n_right = 0;
                 for (const Prim& p : prims) {
-                    if (p.box.lo[axis] < position || (p.box.lo[axis] == position && p.box.hi[axis] == position)) ++n_left;
+                    if (p.box.lo[axis] < position || (p.box.lo[axis] == position && p.box.hi[axis] == position))
+                        ++n_left;
                     if (p.box.hi[axis] > position) ++n_right;
                 }
                 float p_left, p_right;

@@ -22,7 +22,8 @@ void sort_events(std::array<std::vector<Event>, 3>& events) {
     for (auto& e : events) std::sort(e.begin(), e.end());
 }
 
-Split sweep_sah(const std::array<std::vector<Event>, 3>& events, std::size_t n, const AABB& box, const KdCostModel& cost) {
+Split sweep_sah(const std::array<std::vector<Event>, 3>& events, std::size_t n, const AABB& box,
+                const KdCostModel& cost) {
     Split best;
     best.cost = cost.leaf_cost(n);
     if (!(box.surface_area() > 0.0f)) return {};

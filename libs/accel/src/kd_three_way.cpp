@@ -83,7 +83,8 @@ private:
                 above += it.box.lo[axis] > plane;
             }
             const std::size_t middle = items.size() - below - above;
-            const float score = std::abs(static_cast<float>(below) - static_cast<float>(above)) + 0.5f * static_cast<float>(middle);
+            const float score =
+                std::abs(static_cast<float>(below) - static_cast<float>(above)) + 0.5f * static_cast<float>(middle);
             if (score < best_score) best_score = score, best_plane = plane;
         }
         std::array<std::vector<Item>, 3> groups;
@@ -152,7 +153,8 @@ private:
                     if (t != kInfinity) children[n++] = {node.first + c, t};
                 }
                 for (int k = 1; k < n; ++k)
-                    for (int m = k; m > 0 && children[m - 1].t < children[m].t; --m) std::swap(children[m - 1], children[m]);
+                    for (int m = k; m > 0 && children[m - 1].t < children[m].t; --m)
+                        std::swap(children[m - 1], children[m]);
                 for (int k = 0; k < n; ++k) stack[top++] = children[k];
             }
             return any;

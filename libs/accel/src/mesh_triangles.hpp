@@ -27,13 +27,17 @@ public:
         }
         const std::size_t n = m_original.size();
         m_usable.resize(n);
-        if (test == TriangleTest::plane) m_planes.resize(n);
-        else m_corners.resize(n);
+        if (test == TriangleTest::plane)
+            m_planes.resize(n);
+        else
+            m_corners.resize(n);
         for (std::size_t k = 0; k < n; ++k) {
             const std::uint32_t i = m_original[k];
             m_usable[k] = !mesh.is_degenerate(i);
-            if (test == TriangleTest::plane) m_planes[k] = PlaneTriangle(mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2));
-            else m_corners[k] = {mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2)};
+            if (test == TriangleTest::plane)
+                m_planes[k] = PlaneTriangle(mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2));
+            else
+                m_corners[k] = {mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2)};
         }
     }
 
@@ -108,9 +112,12 @@ inline bool test_leaf(const MeshTriangles& tris, const TriangleRay<Test>& r, std
 template <class F>
 decltype(auto) dispatch_triangle_test(TriangleTest test, F&& f) {
     switch (test) {
-        case TriangleTest::moller: return f.template operator()<TriangleTest::moller>();
-        case TriangleTest::plane: return f.template operator()<TriangleTest::plane>();
-        case TriangleTest::watertight: break;
+        case TriangleTest::moller:
+            return f.template operator()<TriangleTest::moller>();
+        case TriangleTest::plane:
+            return f.template operator()<TriangleTest::plane>();
+        case TriangleTest::watertight:
+            break;
     }
     return f.template operator()<TriangleTest::watertight>();
 }

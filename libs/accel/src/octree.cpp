@@ -33,7 +33,8 @@ public:
         m_stats.leaves = leaves;
         m_stats.empty_leaves = empty;
         m_stats.max_depth = m_depth;
-        m_stats.mean_leaf_primitives = leaves > empty ? static_cast<double>(prims) / static_cast<double>(leaves - empty) : 0.0;
+        m_stats.mean_leaf_primitives =
+            leaves > empty ? static_cast<double>(prims) / static_cast<double>(leaves - empty) : 0.0;
         m_stats.bytes = static_cast<std::int64_t>(m_nodes.size() * sizeof(OctNode) + m_triangles.bytes());
     }
 
@@ -146,7 +147,8 @@ private:
                     if (t != kInfinity) children[n++] = {node.first + c, t};
                 }
                 for (int k = 1; k < n; ++k)  // insertion sort, farthest first: at most 8 entries
-                    for (int m = k; m > 0 && children[m - 1].tmin < children[m].tmin; --m) std::swap(children[m - 1], children[m]);
+                    for (int m = k; m > 0 && children[m - 1].tmin < children[m].tmin; --m)
+                        std::swap(children[m - 1], children[m]);
                 for (int k = 0; k < n; ++k) stack[top++] = children[k];
             }
             return any;

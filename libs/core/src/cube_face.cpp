@@ -31,12 +31,18 @@ CubeFaceCoord cube_face_coord(const Vec3& d) {
 Vec3 cube_face_direction(CubeFace face, float s, float t) {
     const float sc = 2.0f * s - 1.0f, tc = 2.0f * t - 1.0f;
     switch (face) {
-        case CubeFace::px: return {1.0f, -tc, -sc};
-        case CubeFace::nx: return {-1.0f, -tc, sc};
-        case CubeFace::py: return {sc, 1.0f, tc};
-        case CubeFace::ny: return {sc, -1.0f, -tc};
-        case CubeFace::pz: return {sc, -tc, 1.0f};
-        case CubeFace::nz: return {-sc, -tc, -1.0f};
+        case CubeFace::px:
+            return {1.0f, -tc, -sc};
+        case CubeFace::nx:
+            return {-1.0f, -tc, sc};
+        case CubeFace::py:
+            return {sc, 1.0f, tc};
+        case CubeFace::ny:
+            return {sc, -1.0f, -tc};
+        case CubeFace::pz:
+            return {sc, -tc, 1.0f};
+        case CubeFace::nz:
+            return {-sc, -tc, -1.0f};
     }
     return {0.0f, 0.0f, 1.0f};
 }

@@ -21,8 +21,8 @@ std::vector<unsigned char> read_binary_file(const std::filesystem::path& path, s
     const std::streamoff size = in.tellg();
     if (size < 0) throw Error(file_error_message(path, "cannot determine the file size"));
     if (static_cast<std::size_t>(size) > max_bytes)
-        throw Error(file_error_message(path, "file of " + std::to_string(size) + " bytes exceeds the limit of " +
-                                                 std::to_string(max_bytes)));
+        throw Error(file_error_message(
+            path, "file of " + std::to_string(size) + " bytes exceeds the limit of " + std::to_string(max_bytes)));
     in.seekg(0, std::ios::beg);
     std::vector<unsigned char> bytes(static_cast<std::size_t>(size));
     if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), size))

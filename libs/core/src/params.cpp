@@ -7,11 +7,16 @@ namespace rtlab {
 namespace {
 const char* type_name(const Params::Value& v) {
     switch (v.index()) {
-        case 0: return "a boolean";
-        case 1: return "a number";
-        case 2: return "a string";
-        case 3: return "a list of numbers";
-        default: return "an object";
+        case 0:
+            return "a boolean";
+        case 1:
+            return "a number";
+        case 2:
+            return "a string";
+        case 3:
+            return "a list of numbers";
+        default:
+            return "an object";
     }
 }
 }  // namespace
@@ -95,7 +100,9 @@ Vec3 Params::get_vec3(std::string_view name) const {
     return {static_cast<float>((*l)[0]), static_cast<float>((*l)[1]), static_cast<float>((*l)[2])};
 }
 
-Vec3 Params::get_vec3(std::string_view name, const Vec3& fallback) const { return has(name) ? get_vec3(name) : fallback; }
+Vec3 Params::get_vec3(std::string_view name, const Vec3& fallback) const {
+    return has(name) ? get_vec3(name) : fallback;
+}
 
 RGB Params::get_rgb(std::string_view name) const {
     const Value& v = require(name);

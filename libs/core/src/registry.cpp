@@ -5,8 +5,8 @@ namespace rtlab::detail {
 void throw_unknown_name(std::string_view category, std::string_view name, const std::vector<std::string>& known) {
     std::string list;
     for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-    throw Error("unknown " + std::string(category) + " '" + std::string(name) + "'; known: " +
-                (list.empty() ? std::string("(none registered)") : list));
+    throw Error("unknown " + std::string(category) + " '" + std::string(name) +
+                "'; known: " + (list.empty() ? std::string("(none registered)") : list));
 }
 
 void throw_duplicate_name(std::string_view category, std::string_view name) {

@@ -24,10 +24,18 @@ enum class PlyFormat { ascii, binary_little_endian, binary_big_endian };
 
 std::size_t type_size(PlyType t) {
     switch (t) {
-        case PlyType::i8: case PlyType::u8: return 1;
-        case PlyType::i16: case PlyType::u16: return 2;
-        case PlyType::i32: case PlyType::u32: case PlyType::f32: return 4;
-        case PlyType::f64: return 8;
+        case PlyType::i8:
+        case PlyType::u8:
+            return 1;
+        case PlyType::i16:
+        case PlyType::u16:
+            return 2;
+        case PlyType::i32:
+        case PlyType::u32:
+        case PlyType::f32:
+            return 4;
+        case PlyType::f64:
+            return 8;
     }
     return 0;
 }
@@ -82,7 +90,7 @@ public:
         for (std::size_t e = 0; e < m_elements.size(); ++e) read_element(e, mesh);
         if (m_vertex_element < 0) fail("no 'vertex' element");
         if (info) {
-            info->format = m_format == PlyFormat::ascii ? "ply ascii"
+            info->format = m_format == PlyFormat::ascii                  ? "ply ascii"
                            : m_format == PlyFormat::binary_little_endian ? "ply binary_little_endian"
                                                                          : "ply binary_big_endian";
         }
@@ -125,10 +133,14 @@ private:
             if (key == "comment" || key == "obj_info") continue;
             if (key == "format") {
                 if (words.size() != 3) fail_line(line_no, "malformed format line");
-                if (words[1] == "ascii") m_format = PlyFormat::ascii;
-                else if (words[1] == "binary_little_endian") m_format = PlyFormat::binary_little_endian;
-                else if (words[1] == "binary_big_endian") m_format = PlyFormat::binary_big_endian;
-                else fail_line(line_no, "unknown format '" + std::string(words[1]) + "'");
+                if (words[1] == "ascii")
+                    m_format = PlyFormat::ascii;
+                else if (words[1] == "binary_little_endian")
+                    m_format = PlyFormat::binary_little_endian;
+                else if (words[1] == "binary_big_endian")
+                    m_format = PlyFormat::binary_big_endian;
+                else
+                    fail_line(line_no, "unknown format '" + std::string(words[1]) + "'");
                 have_format = true;
             } else if (key == "element") {
                 if (words.size() != 3) fail_line(line_no, "malformed element line");
@@ -136,7 +148,8 @@ private:
                 el.name = std::string(words[1]);
                 const auto [p, ec] = std::from_chars(words[2].data(), words[2].data() + words[2].size(), el.count);
                 if (ec != std::errc() || p != words[2].data() + words[2].size())
-                    fail_line(line_no, "element '" + el.name + "' has an invalid count '" + std::string(words[2]) + "'");
+                    fail_line(line_no,
+                              "element '" + el.name + "' has an invalid count '" + std::string(words[2]) + "'");
                 if (el.name == "vertex") m_vertex_element = static_cast<int>(m_elements.size());
                 if (el.name == "face") m_face_element = static_cast<int>(m_elements.size());
                 m_elements.push_back(std::move(el));
@@ -174,7 +187,9 @@ private:
         for (const auto& el : m_elements) {
             long double per = 0.0L;
             for (const auto& p : el.properties)
-                per += m_format == PlyFormat::ascii ? 2.0L : static_cast<long double>(type_size(p.is_list ? p.count_type : p.type));
+                per += m_format == PlyFormat::ascii
+                           ? 2.0L
+                           : static_cast<long double>(type_size(p.is_list ? p.count_type : p.type));
             const long double total = per * static_cast<long double>(el.count);
             needed += total;
             if (needed > static_cast<long double>(available) + 1.0L)
@@ -198,14 +213,43 @@ private:
         if (file_little != (std::endian::native == std::endian::little))
             for (std::size_t i = 0; i < size / 2; ++i) std::swap(raw[i], raw[size - 1 - i]);
         switch (type) {
-            case PlyType::i8: { std::int8_t v; std::memcpy(&v, raw, 1); return v; }
-            case PlyType::u8: return raw[0];
-            case PlyType::i16: { std::int16_t v; std::memcpy(&v, raw, 2); return v; }
-            case PlyType::u16: { std::uint16_t v; std::memcpy(&v, raw, 2); return v; }
-            case PlyType::i32: { std::int32_t v; std::memcpy(&v, raw, 4); return v; }
-            case PlyType::u32: { std::uint32_t v; std::memcpy(&v, raw, 4); return v; }
-            case PlyType::f32: { float v; std::memcpy(&v, raw, 4); return v; }
-            case PlyType::f64: { double v; std::memcpy(&v, raw, 8); return v; }
+            case PlyType::i8: {
+                std::int8_t v;
+                std::memcpy(&v, raw, 1);
+                return v;
+            }
+            case PlyType::u8:
+                return raw[0];
+            case PlyType::i16: {
+                std::int16_t v;
+                std::memcpy(&v, raw, 2);
+                return v;
+            }
+            case PlyType::u16: {
+                std::uint16_t v;
+                std::memcpy(&v, raw, 2);
+                return v;
+            }
+            case PlyType::i32: {
+                std::int32_t v;
+                std::memcpy(&v, raw, 4);
+                return v;
+            }
+            case PlyType::u32: {
+                std::uint32_t v;
+                std::memcpy(&v, raw, 4);
+                return v;
+            }
+            case PlyType::f32: {
+                float v;
+                std::memcpy(&v, raw, 4);
+                return v;
+            }
+            case PlyType::f64: {
+                double v;
+                std::memcpy(&v, raw, 8);
+                return v;
+            }
         }
         return 0.0;
     }
@@ -213,13 +257,16 @@ private:
     double read_ascii_value(const PlyElement& el, std::uint64_t index) {
         const auto* text = reinterpret_cast<const char*>(m_bytes.data());
         const std::size_t end = m_bytes.size();
-        while (m_pos < end && (text[m_pos] == ' ' || text[m_pos] == '\t' || text[m_pos] == '\r' || text[m_pos] == '\n')) {
+        while (m_pos < end &&
+               (text[m_pos] == ' ' || text[m_pos] == '\t' || text[m_pos] == '\r' || text[m_pos] == '\n')) {
             if (text[m_pos] == '\n') ++m_data_line;
             ++m_pos;
         }
-        if (m_pos >= end) fail("truncated data in element '" + el.name + "' #" + std::to_string(index) + " (end of file)");
+        if (m_pos >= end)
+            fail("truncated data in element '" + el.name + "' #" + std::to_string(index) + " (end of file)");
         std::size_t stop = m_pos;
-        while (stop < end && text[stop] != ' ' && text[stop] != '\t' && text[stop] != '\r' && text[stop] != '\n') ++stop;
+        while (stop < end && text[stop] != ' ' && text[stop] != '\t' && text[stop] != '\r' && text[stop] != '\n')
+            ++stop;
         double value = 0.0;
         const char* first = text + m_pos;
         if (*first == '+') ++first;  // from_chars does not accept a leading '+'
@@ -268,14 +315,22 @@ private:
             const std::string& n = el.properties[k].name;
             const int idx = static_cast<int>(k);
             if (el.properties[k].is_list) continue;
-            if (n == "x") xyz[0] = idx;
-            else if (n == "y") xyz[1] = idx;
-            else if (n == "z") xyz[2] = idx;
-            else if (n == "nx") nxyz[0] = idx;
-            else if (n == "ny") nxyz[1] = idx;
-            else if (n == "nz") nxyz[2] = idx;
-            else if (n == "u" || n == "s" || n == "texture_u" || n == "texture_s") uv[0] = idx;
-            else if (n == "v" || n == "t" || n == "texture_v" || n == "texture_t") uv[1] = idx;
+            if (n == "x")
+                xyz[0] = idx;
+            else if (n == "y")
+                xyz[1] = idx;
+            else if (n == "z")
+                xyz[2] = idx;
+            else if (n == "nx")
+                nxyz[0] = idx;
+            else if (n == "ny")
+                nxyz[1] = idx;
+            else if (n == "nz")
+                nxyz[2] = idx;
+            else if (n == "u" || n == "s" || n == "texture_u" || n == "texture_s")
+                uv[0] = idx;
+            else if (n == "v" || n == "t" || n == "texture_v" || n == "texture_t")
+                uv[1] = idx;
         }
         if (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0) fail("'vertex' element lacks x, y or z");
         const bool normals = nxyz[0] >= 0 && nxyz[1] >= 0 && nxyz[2] >= 0;
@@ -312,7 +367,8 @@ private:
             if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) indices = static_cast<int>(k);
         }
         if (indices < 0) fail("'face' element has no 'vertex_indices' list");
-        if (m_vertex_element < 0 || m_vertex_element > m_face_element) fail("'face' element before the 'vertex' element");
+        if (m_vertex_element < 0 || m_vertex_element > m_face_element)
+            fail("'face' element before the 'vertex' element");
         const auto vertex_count = static_cast<std::uint64_t>(mesh.positions.size());
         mesh.triangles.reserve(el.count);
         std::vector<std::uint32_t> corners;

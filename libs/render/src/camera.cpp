@@ -14,10 +14,12 @@ PinholeCamera::PinholeCamera(const CameraSpec& spec) : m_spec(spec) {
         throw Error("camera: vertical field of view must lie in (0, 180) degrees, got " +
                     std::to_string(spec.vertical_fov_degrees));
     const Vec3 view = spec.look_at - spec.eye;
-    if (!(glm::length(view) > 0.0f) || !is_finite(view)) throw Error("camera: eye and look_at must differ and be finite");
+    if (!(glm::length(view) > 0.0f) || !is_finite(view))
+        throw Error("camera: eye and look_at must differ and be finite");
     m_forward = glm::normalize(view);
     const Vec3 right = glm::cross(m_forward, spec.up);
-    if (!(glm::length(right) > 1e-6f * glm::length(spec.up))) throw Error("camera: up vector is parallel to the view direction");
+    if (!(glm::length(right) > 1e-6f * glm::length(spec.up)))
+        throw Error("camera: up vector is parallel to the view direction");
     m_right = glm::normalize(right);
     m_up = glm::cross(m_right, m_forward);
     m_tan_half_fov = std::tan(0.5f * spec.vertical_fov_degrees * kPi / 180.0f);

@@ -48,9 +48,9 @@ inline float lerp(float a, float b, float t) { return a + t * (b - a); }
 
 // The 12 directions to the edge midpoints of a cube, padded to 16 with four of them repeated (the
 // paper's choice: a mask of 4 hash bits instead of a modulo by 12).
-constexpr signed char kGrad3[16][3] = {{1, 1, 0},  {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1},
-                                       {1, 0, -1}, {-1, 0, -1}, {0, 1, 1}, {0, -1, 1},  {0, 1, -1}, {0, -1, -1},
-                                       {1, 1, 0},  {-1, 1, 0}, {0, -1, 1}, {0, -1, -1}};
+constexpr signed char kGrad3[16][3] = {{1, 1, 0},  {-1, 1, 0},  {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1},
+                                       {1, 0, -1}, {-1, 0, -1}, {0, 1, 1},  {0, -1, 1},  {0, 1, -1}, {0, -1, -1},
+                                       {1, 1, 0},  {-1, 1, 0},  {0, -1, 1}, {0, -1, -1}};
 // Eight directions in 2D: the axes and the diagonals.
 constexpr signed char kGrad2[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
 

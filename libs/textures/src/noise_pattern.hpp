@@ -43,8 +43,7 @@ public:
         // A non-finite point gives t = 0 (color1) for every pattern.
         const bool finite = m_s.dimension == 2 ? std::isfinite(q.uv.x) && std::isfinite(q.uv.y) : is_finite(q.point);
         if (!finite) return 0.0f;
-        if (m_s.dimension == 2)
-            return shade(q.uv.x * s, [&](auto&& f) { return f(q.uv.x * s, q.uv.y * s); });
+        if (m_s.dimension == 2) return shade(q.uv.x * s, [&](auto&& f) { return f(q.uv.x * s, q.uv.y * s); });
         return shade(q.point.x * s, [&](auto&& f) { return f(q.point.x * s, q.point.y * s, q.point.z * s); });
     }
 

@@ -47,8 +47,9 @@ float PerlinNoise::eval(double x, double y, double z) const {
     using detail::lerp;
     const float z0 = lerp(lerp(detail::grad_dot3(p[aa], fx, fy, fz), detail::grad_dot3(p[ba], gx, fy, fz), u),
                           lerp(detail::grad_dot3(p[ab], fx, gy, fz), detail::grad_dot3(p[bb], gx, gy, fz), u), v);
-    const float z1 = lerp(lerp(detail::grad_dot3(p[aa + 1], fx, fy, gz), detail::grad_dot3(p[ba + 1], gx, fy, gz), u),
-                          lerp(detail::grad_dot3(p[ab + 1], fx, gy, gz), detail::grad_dot3(p[bb + 1], gx, gy, gz), u), v);
+    const float z1 =
+        lerp(lerp(detail::grad_dot3(p[aa + 1], fx, fy, gz), detail::grad_dot3(p[ba + 1], gx, fy, gz), u),
+             lerp(detail::grad_dot3(p[ab + 1], fx, gy, gz), detail::grad_dot3(p[bb + 1], gx, gy, gz), u), v);
     return kScale3 * lerp(z0, z1, w);
 }
 

@@ -70,7 +70,8 @@ std::shared_ptr<CubeMapTexture> CubeMapTexture::load_faces(const std::array<std:
     } catch (const Error& e) {
         // Name the files: "face 'ny'" alone does not say which file is wrong.
         std::string files;
-        for (int f = 0; f < 6; ++f) files += std::string(f ? ", " : "") + kFaceNames[f] + " = '" + paths[f].string() + "'";
+        for (int f = 0; f < 6; ++f)
+            files += std::string(f ? ", " : "") + kFaceNames[f] + " = '" + paths[f].string() + "'";
         throw Error(std::string(e.what()) + " (files " + files + ")");
     }
 }
@@ -137,7 +138,8 @@ void register_cubemap(TextureRegistry& registry) {
             for (const char* name : kFaceNames) faces_given += p.has(name) ? 1 : 0;
             const int sources = (faces_given > 0 ? 1 : 0) + (p.has("cross") ? 1 : 0) + (p.has("folder") ? 1 : 0);
             if (sources != 1)
-                throw Error(p.context() + ": give exactly one of the six faces (px nx py ny pz nz), 'cross' or 'folder'");
+                throw Error(p.context() +
+                            ": give exactly one of the six faces (px nx py ny pz nz), 'cross' or 'folder'");
             if (p.has("extension") && !p.has("folder")) fail_param(p, "extension", "is only used with 'folder'");
             const ColorEncoding encoding = get_encoding(p);
             const float intensity = positive_float(p, "intensity", 1.0f, true);
@@ -147,9 +149,12 @@ void register_cubemap(TextureRegistry& registry) {
                 const std::string folder = use_folder ? p.get_string("folder") : "";
                 const std::string ext = p.get_string("extension", "jpg");
                 for (int f = 0; f < 6; ++f) {
-                    if (use_folder) paths[f] = std::filesystem::path(folder) / (std::string(kFaceNames[f]) + "." + ext);
-                    else if (p.has(kFaceNames[f])) paths[f] = p.get_string(kFaceNames[f]);
-                    else fail_param(p, kFaceNames[f], "is missing: all six faces are needed");
+                    if (use_folder)
+                        paths[f] = std::filesystem::path(folder) / (std::string(kFaceNames[f]) + "." + ext);
+                    else if (p.has(kFaceNames[f]))
+                        paths[f] = p.get_string(kFaceNames[f]);
+                    else
+                        fail_param(p, kFaceNames[f], "is missing: all six faces are needed");
                 }
             }
             std::shared_ptr<CubeMapTexture> map;

@@ -5,8 +5,8 @@
 
 #include "global_operator.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+#include <cmath>
 
 namespace rtlab::tonemap {
 
@@ -18,7 +18,8 @@ class ExposureOperator final : public ToneOperator {
 public:
     ExposureOperator(double stops, bool filmic) : m_stops(stops), m_filmic(filmic) {
         if (!std::isfinite(stops) || std::abs(stops) > 64.0)
-            throw Error(std::string("tone operator '") + (filmic ? "aces" : "exposure") + "': stops must lie in [-64, 64]");
+            throw Error(std::string("tone operator '") + (filmic ? "aces" : "exposure") +
+                        "': stops must lie in [-64, 64]");
     }
     Image apply(const Image& hdr, ToneReport* report) const override {
         const double scale = std::exp2(m_stops);
@@ -39,10 +40,13 @@ private:
 };
 
 void register_exposure(ToneRegistry& r) {
-    r.add("exposure", [](const Params& p) { return std::make_shared<ExposureOperator>(p.get_float("stops", 0.0f), false); },
-          "linear scale by 2^stops, clamped; stops (default 0)");
-    r.add("aces", [](const Params& p) { return std::make_shared<ExposureOperator>(p.get_float("stops", 0.0f), true); },
-          "Narkowicz 2015 ACES filmic fit per channel after 2^stops; stops (default 0)");
+    r.add(
+        "exposure",
+        [](const Params& p) { return std::make_shared<ExposureOperator>(p.get_float("stops", 0.0f), false); },
+        "linear scale by 2^stops, clamped; stops (default 0)");
+    r.add(
+        "aces", [](const Params& p) { return std::make_shared<ExposureOperator>(p.get_float("stops", 0.0f), true); },
+        "Narkowicz 2015 ACES filmic fit per channel after 2^stops; stops (default 0)");
 }
 
 }  // namespace rtlab::tonemap

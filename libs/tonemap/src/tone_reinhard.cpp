@@ -7,8 +7,8 @@
 
 #include "global_operator.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -43,11 +43,14 @@ private:
 };
 
 void register_reinhard(ToneRegistry& r) {
-    r.add("reinhard",
-          [](const Params& p) {
-              return std::make_shared<ReinhardOperator>(p.get_float("key", 0.18f), p.has("white") ? std::optional<double>(p.get_float("white")) : std::nullopt);
-          },
-          "Reinhard et al. 2002 photographic operator; key (default 0.18), white (default: the image maximum; 0 = infinite)");
+    r.add(
+        "reinhard",
+        [](const Params& p) {
+            return std::make_shared<ReinhardOperator>(
+                p.get_float("key", 0.18f), p.has("white") ? std::optional<double>(p.get_float("white")) : std::nullopt);
+        },
+        "Reinhard et al. 2002 photographic operator; key (default 0.18), white (default: the image maximum; 0 = "
+        "infinite)");
 }
 
 }  // namespace rtlab::tonemap

@@ -6,8 +6,8 @@
 
 #include "global_operator.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+#include <cmath>
 
 namespace rtlab::tonemap {
 
@@ -19,8 +19,10 @@ public:
     Image apply(const Image& hdr, ToneReport* report) const override {
         const LuminanceStats s = measure_luminance(hdr);
         const double ld_a = m_ld_max / 2.0;
-        const double m = std::pow((1.219 + std::pow(ld_a, 0.4)) / (1.219 + std::pow(s.log_average, 0.4)), 2.5) / m_ld_max;
-        fill_report(report, s, m, fmt::format("ward: ldmax {} cd/m2, L_wa {:.6g}, m {:.6g}", m_ld_max, s.log_average, m));
+        const double m =
+            std::pow((1.219 + std::pow(ld_a, 0.4)) / (1.219 + std::pow(s.log_average, 0.4)), 2.5) / m_ld_max;
+        fill_report(report, s, m,
+                    fmt::format("ward: ldmax {} cd/m2, L_wa {:.6g}, m {:.6g}", m_ld_max, s.log_average, m));
         const auto mf = static_cast<float>(m);
         return map_pixels(hdr, [mf](const RGB& c) { return c * mf; });
     }
@@ -30,8 +32,9 @@ private:
 };
 
 void register_ward(ToneRegistry& r) {
-    r.add("ward", [](const Params& p) { return std::make_shared<WardOperator>(p.get_float("ldmax", 100.0f)); },
-          "Ward 1994 contrast-based scale factor; ldmax = display maximum in cd/m2 (default 100)");
+    r.add(
+        "ward", [](const Params& p) { return std::make_shared<WardOperator>(p.get_float("ldmax", 100.0f)); },
+        "Ward 1994 contrast-based scale factor; ldmax = display maximum in cd/m2 (default 100)");
 }
 
 }  // namespace rtlab::tonemap

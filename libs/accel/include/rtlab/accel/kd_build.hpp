@@ -27,7 +27,6 @@ struct KdBuildInput {
 };
 
 /// Builds a tree; threads = 0 lets oneTBB choose. Fills stats (except bytes of the caller's own data).
-KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const KdCostModel& cost = {},
-                         int threads = 0);
+KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const KdCostModel& cost = {}, int threads = 0);
 
 }  // namespace rtlab

@@ -40,7 +40,8 @@ public:
         : m_source(std::move(source)) {
         KdBuildInput input;
         input.bounds.reserve(m_source.size());
-        for (std::size_t i = 0; i < m_source.size(); ++i) input.bounds.push_back(m_source.bounds(static_cast<std::uint32_t>(i)));
+        for (std::size_t i = 0; i < m_source.size(); ++i)
+            input.bounds.push_back(m_source.bounds(static_cast<std::uint32_t>(i)));
         if constexpr (KdClippableSource<Source>)
             input.clip = [this](std::uint32_t i, const AABB& box) { return m_source.clipped_bounds(i, box); };
         m_tree = build_kd_tree(input, strategy, cost, threads);

@@ -16,8 +16,14 @@ struct AABB {
     static AABB from_points(const Point3& a, const Point3& b) { return {glm::min(a, b), glm::max(a, b)}; }
 
     bool is_empty() const { return !(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z); }
-    void expand(const Point3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
-    void expand(const AABB& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+    void expand(const Point3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    void expand(const AABB& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
     AABB united(const AABB& b) const { return {glm::min(lo, b.lo), glm::max(hi, b.hi)}; }
     AABB intersected(const AABB& b) const { return {glm::max(lo, b.lo), glm::min(hi, b.hi)}; }
     Vec3 extent() const { return hi - lo; }

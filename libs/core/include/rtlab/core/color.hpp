@@ -14,9 +14,24 @@ struct RGB {
     constexpr explicit RGB(float v) : r(v), g(v), b(v) {}
 
     constexpr float operator[](int i) const { return i == 0 ? r : (i == 1 ? g : b); }
-    constexpr RGB& operator+=(const RGB& o) { r += o.r; g += o.g; b += o.b; return *this; }
-    constexpr RGB& operator*=(const RGB& o) { r *= o.r; g *= o.g; b *= o.b; return *this; }
-    constexpr RGB& operator*=(float s) { r *= s; g *= s; b *= s; return *this; }
+    constexpr RGB& operator+=(const RGB& o) {
+        r += o.r;
+        g += o.g;
+        b += o.b;
+        return *this;
+    }
+    constexpr RGB& operator*=(const RGB& o) {
+        r *= o.r;
+        g *= o.g;
+        b *= o.b;
+        return *this;
+    }
+    constexpr RGB& operator*=(float s) {
+        r *= s;
+        g *= s;
+        b *= s;
+        return *this;
+    }
     constexpr RGB& operator/=(float s) { return *this *= (1.0f / s); }
     friend constexpr RGB operator+(RGB a, const RGB& b) { return a += b; }
     friend constexpr RGB operator-(const RGB& a, const RGB& b) { return {a.r - b.r, a.g - b.g, a.b - b.b}; }

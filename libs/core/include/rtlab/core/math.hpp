@@ -28,16 +28,12 @@ constexpr float gamma_bound(int n) {
     return (static_cast<float>(n) * eps) / (1.0f - static_cast<float>(n) * eps);
 }
 
-inline bool is_finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+inline bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 inline float max_component(const Vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 inline float min_component(const Vec3& v) { return std::min(v.x, std::min(v.y, v.z)); }
 
 /// Index of the largest component (0, 1 or 2).
-inline int max_dimension(const Vec3& v) {
-    return (v.x > v.y) ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2);
-}
+inline int max_dimension(const Vec3& v) { return (v.x > v.y) ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2); }
 
 }  // namespace rtlab

@@ -24,7 +24,10 @@ public:
     std::uint32_t uniform_u32(std::uint32_t bound) { return m_gen(bound); }
     /// Uniform in [0, 1): 24 random mantissa bits, never exactly 1.
     float uniform() { return static_cast<float>(m_gen() >> 8) * 0x1p-24f; }
-    Vec2 uniform2() { float a = uniform(); return {a, uniform()}; }
+    Vec2 uniform2() {
+        float a = uniform();
+        return {a, uniform()};
+    }
     void advance(std::uint64_t delta) { m_gen.advance(delta); }
 
 private:

@@ -19,7 +19,7 @@ WrapMode parse_wrap_mode(std::string_view name);
 struct ImageTextureOptions {
     WrapMode wrap = WrapMode::repeat;
     ImageFilter filter = ImageFilter::bilinear;
-    Vec2 scale{1.0f};   ///< uv' = uv * scale + offset, then looked up
+    Vec2 scale{1.0f};  ///< uv' = uv * scale + offset, then looked up
     Vec2 offset{0.0f};
 };
 
@@ -32,7 +32,8 @@ public:
     /// The image must not be empty. 8-bit files are already linear here (read_image decodes sRGB).
     explicit ImageTexture(std::shared_ptr<const Image> image, const ImageTextureOptions& options = {});
     /// Loads with rtlab::read_image; a missing or corrupt file throws rtlab::Error naming it.
-    static std::shared_ptr<ImageTexture> load(const std::filesystem::path& path, const ImageTextureOptions& options = {},
+    static std::shared_ptr<ImageTexture> load(const std::filesystem::path& path,
+                                              const ImageTextureOptions& options = {},
                                               ColorEncoding encoding = ColorEncoding::srgb);
 
     RGB eval(const TextureLookup& lookup) const override { return sample(lookup.uv); }

@@ -9,8 +9,8 @@ namespace rtlab {
 /// \brief Everything a texture may look at: surface uv, the object-space point (solid textures) and
 /// the direction (environment maps). A caller fills what it has; each texture documents what it reads.
 struct TextureLookup {
-    Vec2 uv{0.0f};             ///< surface coordinates; u to the right, v up (v = 0 is an image's bottom row)
-    Point3 point{0.0f};        ///< object-space point, for solid textures (checker3d, 3D noise)
+    Vec2 uv{0.0f};                     ///< surface coordinates; u to the right, v up (v = 0 is an image's bottom row)
+    Point3 point{0.0f};                ///< object-space point, for solid textures (checker3d, 3D noise)
     Vec3 direction{0.0f, 0.0f, 1.0f};  ///< lookup direction for environment maps (need not be unit length)
 };
 

@@ -11,11 +11,11 @@ namespace rtlab {
 
 /// \brief What an operator measured and used; reported to the user.
 struct ToneReport {
-    double log_average = 0.0;       ///< exp(mean(log(delta + L))) over finite pixels, delta = 1e-4
-    double max_luminance = 0.0;     ///< over finite pixels
-    std::size_t invalid_pixels = 0; ///< NaN or infinite pixels: left out of the statistics, written black
-    double scale = 1.0;             ///< the operator's scale factor (m for Ward, a / L_avg for Reinhard, 2^stops)
-    std::string summary;            ///< one line naming the operator and its parameters
+    double log_average = 0.0;        ///< exp(mean(log(delta + L))) over finite pixels, delta = 1e-4
+    double max_luminance = 0.0;      ///< over finite pixels
+    std::size_t invalid_pixels = 0;  ///< NaN or infinite pixels: left out of the statistics, written black
+    double scale = 1.0;              ///< the operator's scale factor (m for Ward, a / L_avg for Reinhard, 2^stops)
+    std::string summary;             ///< one line naming the operator and its parameters
 };
 
 /// \brief A global tone operator. apply() returns linear display values clamped to [0, 1], finite for
