@@ -1,4 +1,5 @@
 #include <rtlab/core/error.hpp>
+#include <rtlab/core/rng.hpp>
 #include <rtlab/geometry/box.hpp>
 #include <rtlab/geometry/cylinder.hpp>
 #include <rtlab/geometry/disk.hpp>
@@ -191,4 +192,43 @@ TEST_CASE("instances move, scale and keep normals perpendicular", "[shapes]") {
     const Vec3 expected = glm::normalize(Vec3(1.5f / 9.0f, std::sqrt(1.0f - 0.25f), 0));
     CHECK(glm::length(h.geometric_normal - expected) < 1e-4f);
     CHECK_THROWS_AS(Instance(unit, Mat4(0.0f)), Error);
+}
+
+TEST_CASE("two-step closest hits give the one-step record bit for bit, deferred or not", "[shapes]") {
+    // Sphere defers its record (its own two steps); Box and Quad take the defaults (intersect twice).
+    const Sphere sphere({0.3f, -0.2f, 0.1f}, 1.3f);
+    const Box box(AABB{{-1.0f, -0.5f, -0.8f}, {0.7f, 1.1f, 0.9f}});
+    const Quad quad({-1.0f, 0.0f, -1.0f}, {2.0f, 0.0f, 0.0f}, {0.0f, 0.3f, 2.0f});
+    CHECK(sphere.defers_record());
+    CHECK_FALSE(box.defers_record());
+    Rng rng(7);
+    int hits = 0;
+    for (const Shape* shape :
+         {static_cast<const Shape*>(&sphere), static_cast<const Shape*>(&box), static_cast<const Shape*>(&quad)}) {
+        for (int i = 0; i < 2000; ++i) {
+            const Point3 o = 4.0f * Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 2.0f;
+            const Vec3 d = Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5f;
+            // Half of the rays start inside the shape's bounds, a tenth are cut short by tmax.
+            const Ray ray{o, d, 0.0f, i % 10 == 0 ? 0.5f : kInfinity};
+            SurfaceHit one;
+            const bool hit = shape->intersect(ray, one);
+            float t = -1.0f;
+            REQUIRE(shape->intersect_distance(ray, t) == hit);
+            if (!hit) continue;
+            ++hits;
+            SurfaceHit two;
+            shape->complete_hit(ray, t, two);
+            CHECK(t == one.t);
+            CHECK(two.t == one.t);
+            CHECK(two.point == one.point);
+            CHECK(two.point_error == one.point_error);
+            CHECK(two.geometric_normal == one.geometric_normal);
+            CHECK(two.shading_normal == one.shading_normal);
+            CHECK(two.uv == one.uv);
+            CHECK(two.tangent == one.tangent);
+            CHECK(two.front_face == one.front_face);
+            CHECK(two.shape == one.shape);
+        }
+    }
+    CHECK(hits > 1500);
 }

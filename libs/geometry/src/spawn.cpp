@@ -18,9 +18,9 @@ Point3 offset_ray_origin(const Point3& p, const Vec3& p_error, const Normal3& ng
     // normal leans along. Unlike pbrt, also when d = 0, so an exact point still leaves its surface.
     for (int a = 0; a < 3; ++a) {
         if (side[a] > 0.0f)
-            origin[a] = std::nextafter(origin[a], kInfinity);
+            origin[a] = next_float_up(origin[a]);
         else if (side[a] < 0.0f)
-            origin[a] = std::nextafter(origin[a], -kInfinity);
+            origin[a] = next_float_down(origin[a]);
     }
     return origin;
 }

@@ -37,6 +37,13 @@ bool Sphere::nearest_root(const Ray& ray, float& t) const {
 bool Sphere::intersect(const Ray& ray, SurfaceHit& hit) const {
     float t;
     if (!nearest_root(ray, t)) return false;
+    complete_hit(ray, t, hit);
+    return true;
+}
+
+bool Sphere::intersect_distance(const Ray& ray, float& t) const { return nearest_root(ray, t); }
+
+void Sphere::complete_hit(const Ray& ray, float t, SurfaceHit& hit) const {
     // Relative to the centre, then projected back onto the sphere (Pharr et al., pbrt-v4): the projection
     // removes the radial error of o + t d, which is what a spawned ray must clear, leaving gamma(5) |rel|.
     Vec3 rel = (ray.origin - m_centre) + t * ray.direction;
@@ -53,7 +60,6 @@ bool Sphere::intersect(const Ray& ray, SurfaceHit& hit) const {
     const float u = (phi + kPi) / (2.0f * kPi);
     const float v = 1.0f - std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi;
     geometry::fill_hit(hit, ray, t, p, error, n, {u, v}, Vec3(n.z, 0.0f, -n.x), 0, this);
-    return true;
 }
 
 bool Sphere::occluded(const Ray& ray) const {

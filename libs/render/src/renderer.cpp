@@ -38,7 +38,8 @@ struct TileContext {
 
 /// One camera sample: the ray through `position` with the lens sample of `key`.
 RGB trace(const TileContext& c, Vec2 position, const SampleKey& key, RayCounters& counters) {
-    const Ray ray = c.camera.generate_ray(position, sample_uniform2(key, kLensDimension));
+    const Vec2 lens = c.camera.uses_lens_sample() ? sample_uniform2(key, kLensDimension) : Vec2(0.5f);
+    const Ray ray = c.camera.generate_ray(position, lens);
     ++counters.camera;
     return c.radiance.radiance(ray, key, counters);
 }

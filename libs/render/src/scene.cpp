@@ -37,24 +37,38 @@ public:
     Set(std::vector<const Shape*> shapes, std::size_t threshold) {
         if (shapes.size() >= threshold && !shapes.empty())
             m_tree.emplace(ObjectSource{std::move(shapes)}, KdStrategy::sah);
-        else
+        else {
             m_list = std::move(shapes);
+            for (const Shape* s : m_list) m_defers.push_back(s->defers_record());
+        }
     }
 
     bool is_tree() const { return m_tree.has_value(); }
 
     bool intersect(const Ray& ray, SurfaceHit& hit) const {
         if (m_tree) return m_tree->intersect(ray, hit);
+        // Shapes that defer their record only report distances; the one that stays nearest is completed at the
+        // end, so a hit a closer one replaces costs no record.
         Ray r = ray;
-        bool found = false;
-        for (const Shape* s : m_list) {
-            if (s->intersect(r, hit)) {
-                found = true;
+        const Shape* deferred = nullptr;
+        const Shape* found = nullptr;
+        for (std::size_t i = 0; i < m_list.size(); ++i) {
+            const Shape* s = m_list[i];
+            if (m_defers[i]) {
+                float t;
+                if (!s->intersect_distance(r, t)) continue;
+                r.tmax = t;
+                deferred = s;
+            } else {
+                if (!s->intersect(r, hit)) continue;
                 r.tmax = hit.t;
-                hit.shape = s;
+                deferred = nullptr;
             }
+            found = s;
         }
-        return found;
+        if (deferred) deferred->complete_hit(ray, r.tmax, hit);
+        if (found) hit.shape = found;
+        return found != nullptr;
     }
 
     bool occluded(const Ray& ray) const {
@@ -73,6 +87,7 @@ public:
 
 private:
     std::vector<const Shape*> m_list;
+    std::vector<char> m_defers;  // m_list[i]->defers_record(), asked once
     std::optional<KdTree<ObjectSource>> m_tree;
 };
 

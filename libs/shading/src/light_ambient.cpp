@@ -14,6 +14,7 @@ class AmbientLight final : public Light {
 public:
     explicit AmbientLight(const RGB& intensity) : m_intensity(intensity) {}
     int sample_count() const override { return 0; }
+    bool uses_random_sample() const override { return false; }
     LightSample sample(const Point3&, int, Vec2, Convention) const override { return {}; }
     RGB ambient() const override { return m_intensity; }
 

@@ -14,6 +14,7 @@ class DirectionalLight final : public Light {
 public:
     DirectionalLight(const Vec3& direction, const RGB& intensity) : m_wi(-direction), m_intensity(intensity) {}
 
+    bool uses_random_sample() const override { return false; }
     LightSample sample(const Point3&, int, Vec2, Convention) const override {
         LightSample s;
         s.wi = m_wi;

@@ -14,6 +14,7 @@ class PointLight final : public Light {
 public:
     PointLight(const Point3& position, const RGB& intensity) : m_position(position), m_intensity(intensity) {}
 
+    bool uses_random_sample() const override { return false; }
     LightSample sample(const Point3& p, int, Vec2, Convention c) const override {
         return point_sample(p, m_position, m_intensity, c);
     }

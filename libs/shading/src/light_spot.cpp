@@ -24,6 +24,7 @@ public:
           m_cos_outer(std::cos(cone)),
           m_cos_inner(std::cos(cone - falloff)) {}
 
+    bool uses_random_sample() const override { return false; }
     LightSample sample(const Point3& p, int, Vec2, Convention c) const override {
         LightSample s = point_sample(p, m_position, m_intensity, c);
         const float cos_theta = -glm::dot(s.wi, m_axis);

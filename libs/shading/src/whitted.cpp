@@ -135,7 +135,8 @@ RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, in
             L += t.diffuse * light->ambient();
             const int n = light->sample_count();
             for (int i = 0; i < n; ++i, dim += 2) {
-                const LightSample s = light->sample(hit.point, i, sample_uniform2(here, dim), m_options.convention);
+                const Vec2 u = light->uses_random_sample() ? sample_uniform2(here, dim) : Vec2(0.5f);
+                const LightSample s = light->sample(hit.point, i, u, m_options.convention);
                 // Light from below the true surface would have to pass through it.
                 if (s.arriving.is_black() || !(glm::dot(s.wi, ng) > 0.0f)) continue;
                 const RGB f = material.direct(t, wo_local, frame.to_local(s.wi), m_options.convention);

@@ -17,6 +17,18 @@ public:
     virtual bool intersect(const Ray& ray, SurfaceHit& hit) const = 0;
     /// Whether anything blocks the ray for some tmin < t < tmax; may stop at the first blocker.
     virtual bool occluded(const Ray& ray) const = 0;
+
+    /// Closest hits in two steps, for picking the nearest of several shapes before paying for one full
+    /// record (a sphere's uv alone costs an atan2 and an acos): intersect_distance() gives the t intersect()
+    /// would report, complete_hit() then fills the record for that t. Worth it only where the distance is
+    /// much cheaper than the record, which the shape says by defers_record(); a mesh, whose record needs the
+    /// triangle its traversal found, keeps the one-step intersect(). The defaults are correct for any shape.
+    virtual bool defers_record() const { return false; }
+    /// The t of intersect()'s hit, without the record; the default runs intersect() into a scratch record.
+    virtual bool intersect_distance(const Ray& ray, float& t) const;
+    /// The record intersect() would give for the hit intersect_distance() found at t on this ray; the default
+    /// runs intersect() again with tmax just above t.
+    virtual void complete_hit(const Ray& ray, float t, SurfaceHit& hit) const;
 };
 
 }  // namespace rtlab

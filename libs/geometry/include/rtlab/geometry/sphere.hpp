@@ -13,6 +13,9 @@ public:
     AABB bounds() const override;
     bool intersect(const Ray& ray, SurfaceHit& hit) const override;
     bool occluded(const Ray& ray) const override;
+    bool defers_record() const override { return true; }
+    bool intersect_distance(const Ray& ray, float& t) const override;
+    void complete_hit(const Ray& ray, float t, SurfaceHit& hit) const override;
 
 private:
     bool nearest_root(const Ray& ray, float& t) const;

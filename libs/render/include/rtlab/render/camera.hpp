@@ -23,6 +23,8 @@ public:
     /// The primary ray through image position `image`; `lens` is a uniform sample in [0, 1)^2 that
     /// cameras with an aperture use to pick the point on the lens (a pinhole ignores it).
     virtual Ray generate_ray(Vec2 image, Vec2 lens) const = 0;
+    /// Whether generate_ray() reads the lens sample; false lets the renderer skip hashing it.
+    virtual bool uses_lens_sample() const { return true; }
     virtual int width() const = 0;
     virtual int height() const = 0;
 };
@@ -38,6 +40,7 @@ public:
     /// Unit-direction ray through the image position (x, y), with tmin = 0 and tmax = infinity.
     Ray ray(float x, float y) const;
     Ray generate_ray(Vec2 image, Vec2 /*lens*/) const override { return ray(image.x, image.y); }
+    bool uses_lens_sample() const override { return false; }
     int width() const override { return m_spec.width; }
     int height() const override { return m_spec.height; }
     const CameraSpec& spec() const { return m_spec; }

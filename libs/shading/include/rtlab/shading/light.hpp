@@ -24,6 +24,8 @@ public:
     /// Sample `index` of sample_count() seen from `point`; u is uniform in [0, 1)^2 (used by area lights).
     /// arriving is black where the light gives nothing (outside a spot's cone, behind an area light).
     virtual LightSample sample(const Point3& point, int index, Vec2 u, Convention convention) const = 0;
+    /// Whether sample() reads u; false lets the caller skip hashing random numbers nobody uses.
+    virtual bool uses_random_sample() const { return true; }
     /// Light arriving equally from every direction (ambient light), black for the others.
     virtual RGB ambient() const { return {}; }
 };
