@@ -190,10 +190,9 @@ TEST_CASE("triangle tests leak no ray at coordinates from 1e-4 to 1e6 when water
     }
 }
 
-// Known failure: the header promises that zero-area triangles are never hit, but the watertight test (whose
-// shear rounds collinear corners apart) and Moller-Trumbore hit some; the accelerators drop degenerate
-// triangles when they build, so meshes are not affected.
-TEST_CASE("degenerate triangles are never hit by any triangle test", "[stability][!mayfail]") {
+// The header promises that zero-area triangles are never hit: the watertight test (whose shear rounds
+// collinear corners apart) and Moller-Trumbore once hit some; both now check a hit's corners exactly.
+TEST_CASE("degenerate triangles are never hit by any triangle test", "[stability]") {
     // Zero-area triangles, exactly so in float (TriangleMesh::is_degenerate): repeated corners, corners on a
     // line through the origin at power-of-two steps, a corner in the middle of the opposite edge.
     const std::vector<std::array<Point3, 3>> tris = {

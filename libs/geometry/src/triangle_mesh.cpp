@@ -1,4 +1,5 @@
 #include <rtlab/core/error.hpp>
+#include <rtlab/geometry/triangle_intersect.hpp>
 #include <rtlab/geometry/triangle_mesh.hpp>
 
 #include <glm/gtc/type_precision.hpp>
@@ -21,14 +22,7 @@ AABB TriangleMesh::bounds() const {
 }
 
 bool TriangleMesh::is_degenerate(std::size_t i) const {
-    const Point3 &a = corner(i, 0), &b = corner(i, 1), &c = corner(i, 2);
-    if (!is_finite(a) || !is_finite(b) || !is_finite(c)) return true;
-    // In double, the cross product of float edges is exact enough that zero means collinear corners,
-    // not a small triangle lost to rounding.
-    const glm::dvec3 e1 = glm::dvec3(b) - glm::dvec3(a);
-    const glm::dvec3 e2 = glm::dvec3(c) - glm::dvec3(a);
-    const glm::dvec3 n = glm::cross(e1, e2);
-    return n.x == 0.0 && n.y == 0.0 && n.z == 0.0;
+    return is_degenerate_triangle(corner(i, 0), corner(i, 1), corner(i, 2));
 }
 
 std::size_t TriangleMesh::degenerate_count() const {

@@ -13,6 +13,17 @@
 
 namespace rtlab {
 
+/// Whether the corners are collinear (or one is not finite): in double, the cross product of the float edges
+/// is exact enough that zero means collinear corners, not a small triangle lost to rounding. Such a triangle
+/// has no plane and no normal, so no test reports a hit on it; meshes drop them when their trees are built.
+inline bool is_degenerate_triangle(const Point3& a, const Point3& b, const Point3& c) {
+    if (!is_finite(a) || !is_finite(b) || !is_finite(c)) return true;
+    const glm::dvec3 e1 = glm::dvec3(b) - glm::dvec3(a);
+    const glm::dvec3 e2 = glm::dvec3(c) - glm::dvec3(a);
+    const glm::dvec3 n = glm::cross(e1, e2);
+    return n.x == 0.0 && n.y == 0.0 && n.z == 0.0;
+}
+
 /// Which ray-triangle test a mesh or accelerator uses.
 enum class TriangleTest { watertight, moller, plane };
 
@@ -107,6 +118,8 @@ inline std::optional<TriangleHit> intersect_watertight(const WatertightRay& r, f
                                 max_abs3(az, bz, cz), max_abs3(u, v, w), std::fabs(inv)) &&
         !watertight_near_hit_in_front(r, p0, p1, p2))
         return std::nullopt;
+    // Checked only for hits, where it costs little: the shear can round collinear corners apart.
+    if (is_degenerate_triangle(p0, p1, p2)) return std::nullopt;
     return TriangleHit{t, v * inv, w * inv};
 }
 
@@ -126,6 +139,7 @@ inline std::optional<TriangleHit> intersect_moller(const Ray& ray, float tmin, f
     if (!(v >= 0.0f && u + v <= 1.0f)) return std::nullopt;
     const float t = glm::dot(e2, qvec) * inv;
     if (!(t > tmin && t < tmax)) return std::nullopt;
+    if (is_degenerate_triangle(p0, p1, p2)) return std::nullopt;  // only for hits: rounding can make det != 0
     return TriangleHit{t, u, v};
 }
 
