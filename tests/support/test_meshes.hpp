@@ -14,12 +14,13 @@ namespace rtlab::test {
 inline TriangleMesh icosphere(int subdivisions, float radius = 1.0f, Point3 centre = Point3(0.0f)) {
     const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
     TriangleMesh m;
-    for (const Vec3& v : {Vec3(-1, t, 0), Vec3(1, t, 0), Vec3(-1, -t, 0), Vec3(1, -t, 0), Vec3(0, -1, t), Vec3(0, 1, t),
-                          Vec3(0, -1, -t), Vec3(0, 1, -t), Vec3(t, 0, -1), Vec3(t, 0, 1), Vec3(-t, 0, -1), Vec3(-t, 0, 1)})
+    for (const Vec3& v :
+         {Vec3(-1, t, 0), Vec3(1, t, 0), Vec3(-1, -t, 0), Vec3(1, -t, 0), Vec3(0, -1, t), Vec3(0, 1, t),
+          Vec3(0, -1, -t), Vec3(0, 1, -t), Vec3(t, 0, -1), Vec3(t, 0, 1), Vec3(-t, 0, -1), Vec3(-t, 0, 1)})
         m.positions.push_back(glm::normalize(v));
-    m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+    m.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
                    {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                   {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+                   {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     for (int s = 0; s < subdivisions; ++s) {
         std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
         auto mid = [&](std::uint32_t a, std::uint32_t b) {
@@ -77,7 +78,8 @@ inline TriangleMesh stacked_quads(int count, float x0 = 1.0f) {
     for (int i = 0; i < count; ++i) {
         const float y = 0.001f * static_cast<float>(i);
         const auto b = static_cast<std::uint32_t>(m.positions.size());
-        m.positions.insert(m.positions.end(), {Point3(x0, y, 0), Point3(x0, y + 1, 0), Point3(x0, y + 1, 1), Point3(x0, y, 1)});
+        m.positions.insert(m.positions.end(),
+                           {Point3(x0, y, 0), Point3(x0, y + 1, 0), Point3(x0, y + 1, 1), Point3(x0, y, 1)});
         m.triangles.push_back({b, b + 1, b + 2});
         m.triangles.push_back({b, b + 2, b + 3});
     }
@@ -121,6 +123,34 @@ inline TriangleMesh grid_box(int n) {
         face(axis, 0.0f, true);
         face(axis, static_cast<float>(n), false);
     }
+    return m;
+}
+
+/// Unit cubes (side `scale`) in the cells of a 4 x 4 x 4 lattice whose coordinates add up to an even number,
+/// from `offset`, each face two triangles: neighbours touch only at edges, every face lies in a lattice plane
+/// shared by the faces of other cubes, and a kd-tree splits on those planes.
+inline TriangleMesh cube_lattice(float scale, Point3 offset = Point3(0.0f)) {
+    TriangleMesh m;
+    auto quad = [&m](const Point3& o, const Vec3& a, const Vec3& b) {
+        const auto base = static_cast<std::uint32_t>(m.positions.size());
+        m.positions.insert(m.positions.end(), {o, o + a, o + a + b, o + b});
+        m.triangles.push_back({base, base + 1, base + 2});
+        m.triangles.push_back({base, base + 2, base + 3});
+    };
+    const Vec3 x(scale, 0.0f, 0.0f), y(0.0f, scale, 0.0f), z(0.0f, 0.0f, scale);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            for (int k = 0; k < 4; ++k) {
+                if ((i + j + k) % 2) continue;
+                const Point3 o =
+                    offset + scale * Vec3(static_cast<float>(i), static_cast<float>(j), static_cast<float>(k));
+                quad(o, y, x);
+                quad(o + z, x, y);
+                quad(o, x, z);
+                quad(o + y, z, x);
+                quad(o, z, y);
+                quad(o + x, y, z);
+            }
     return m;
 }
 

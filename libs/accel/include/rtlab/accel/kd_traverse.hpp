@@ -43,15 +43,21 @@ bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, floa
     const KdNode* nodes = tree.nodes.data();
     std::uint32_t index = 0;
     bool hit = false;
-    // Takes the next node from the stack; false when the walk is over.
+    // Takes the next node from the stack; false when the walk is over. A closest-hit walk skips the nodes
+    // that begin past the closest hit, one at a time: the stack is not sorted by tmin. A ray lying in a
+    // split plane (a NaN plane distance) pushes the far child over the whole interval, under the entries
+    // that its near child then pushes with larger tmin, so a hit before those says nothing about it.
     auto pop = [&]() {
-        if (top == 0) return false;
-        --top;
-        index = stack[top].node;
-        tmin = stack[top].tmin;
-        tmax = stack[top].tmax;
-        if constexpr (!AnyHit) return !(closest < tmin);  // else the closest hit lies before all that is left
-        return true;
+        while (top != 0) {
+            --top;
+            if constexpr (!AnyHit)
+                if (closest < stack[top].tmin) continue;
+            index = stack[top].node;
+            tmin = stack[top].tmin;
+            tmax = stack[top].tmax;
+            return true;
+        }
+        return false;
     };
     for (;;) {
         const KdNode node = nodes[index];
