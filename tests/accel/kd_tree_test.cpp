@@ -119,6 +119,46 @@ TEST_CASE("interior nodes flag exactly their empty children and keep siblings in
     }
 }
 
+TEST_CASE("a closest-hit walk in a split plane tests the far child after a hit in nodes pushed later", "[kd]") {
+    // By hand: the root splits x at 0; its below child splits z at 2 (leaf A below; above it a node splitting
+    // z at 6 into leaves B1 and B2); its above child is leaf C. A ray along +z in the plane x = 0 has a NaN
+    // distance to the root's plane: it enters the near child (by the sign of its x component) and pushes the
+    // other over its whole interval [0, 10], before the near child pushes intervals beginning at 2 and 6.
+    // Below the plane, B1 is hit at t = 5; above it, C at t = 1. The node beginning at 6 lies past the hit
+    // at 5, but the one under it, C, does not: the walk must go on to C and answer t = 1.
+    KdTreeData tree;
+    tree.nodes.resize(8, KdNode::leaf(0, 0));
+    tree.nodes[0] = KdNode::interior(0, 0.0f, 2);
+    tree.nodes[2] = KdNode::interior(2, 2.0f, 4);
+    tree.nodes[3] = KdNode::leaf(1, 2);  // C
+    tree.nodes[4] = KdNode::leaf(1, 0);  // A
+    tree.nodes[5] = KdNode::interior(2, 6.0f, 6);
+    tree.nodes[6] = KdNode::leaf(1, 1);  // B1
+    tree.nodes[7] = KdNode::leaf(1, 3);  // B2
+    tree.bounds = AABB(Point3(-1.0f, -1.0f, 0.0f), Point3(1.0f, 1.0f, 10.0f));
+    tree.max_depth = 4;
+    const float hit_t[4] = {kInfinity, 5.0f, 1.0f, 8.0f};  // A misses; B1, C, B2
+    for (float x_direction : {0.0f, -0.0f}) {
+        const Ray ray{Point3(0.0f, 0.5f, 0.0f), Vec3(x_direction, 0.0f, 1.0f)};  // t = z
+        std::vector<std::uint32_t> visited;
+        float closest = kInfinity;
+        const bool hit = kd_traverse<false>(tree, ray, [&](const KdNode& leaf, float& limit) {
+            visited.push_back(leaf.primitive_offset());
+            if (!(hit_t[leaf.primitive_offset()] < limit)) return false;
+            limit = hit_t[leaf.primitive_offset()];
+            closest = limit;
+            return true;
+        });
+        INFO("x component " << (std::signbit(x_direction) ? "-0" : "+0") << ", " << visited.size() << " leaves tested");
+        CHECK(hit);
+        CHECK(closest == 1.0f);
+        CHECK(std::find(visited.begin(), visited.end(), 2u) != visited.end());
+        // any-hit stops at the first leaf that hits
+        CHECK(kd_traverse<true>(
+            tree, ray, [&](const KdNode& leaf, float&) { return hit_t[leaf.primitive_offset()] < kInfinity; }));
+    }
+}
+
 TEST_CASE("the cost model validates its constants", "[kd]") {
     CHECK_THROWS_AS(KdCostModel(0.0f, 1.0f, 0.2f), Error);
     CHECK_THROWS_AS(KdCostModel(1.0f, -1.0f, 0.2f), Error);

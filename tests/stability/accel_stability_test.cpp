@@ -134,8 +134,10 @@ Outcome compare(const TriangleAccelerator& accel, const TriangleAccelerator& bru
 
 /// Every method against brute force on one mesh and ray set; methods with the watertight test are held to
 /// 0 mismatches except Embree, which runs its own triangle test (measured only).
-/// kd_trees: the kd-tree methods of the factory ("kd-sah", ..., not "kd-three-way"), whose leaks at split
-/// planes issue 12 is closing (their cases are known failures until then); otherwise every other method.
+/// kd_trees: the kd-tree methods of the factory ("kd-sah", ..., not "kd-three-way"), in cases of their own
+/// (they leaked at split planes until issue 12: a ray lying in a split plane lost the far child's closer hit
+/// when its closest-hit walk stopped at the first stacked node beginning past a hit); otherwise every other
+/// method.
 bool is_split_plane_kd(const std::string& method) { return method.rfind("kd-", 0) == 0 && method != "kd-three-way"; }
 
 void mismatch_rows(bool kd_trees, const std::string& input, const TriangleMesh& mesh, const std::vector<Ray>& rays) {
@@ -166,9 +168,7 @@ TEST_CASE("accelerators agree with brute force for axis-parallel in-plane and gr
     lattice_rays_case(false);
 }
 
-// Known failure until issue 12 closes the kd-trees' leaks at split planes.
-TEST_CASE("kd-trees: accelerators agree with brute force for axis-parallel in-plane and grazing rays",
-          "[stability][!mayfail]") {
+TEST_CASE("kd-trees: accelerators agree with brute force for axis-parallel in-plane and grazing rays", "[stability]") {
     lattice_rays_case(true);
 }
 
@@ -188,9 +188,7 @@ TEST_CASE("accelerators agree with brute force on flat and stacked coplanar geom
     flat_and_stacked_case(false);
 }
 
-// Known failure until issue 12 closes the kd-trees' leaks at split planes.
-TEST_CASE("kd-trees: accelerators agree with brute force on flat and stacked coplanar geometry",
-          "[stability][!mayfail]") {
+TEST_CASE("kd-trees: accelerators agree with brute force on flat and stacked coplanar geometry", "[stability]") {
     flat_and_stacked_case(true);
 }
 
@@ -213,9 +211,7 @@ TEST_CASE("accelerators agree with brute force with degenerate triangles among g
     degenerate_case(false);
 }
 
-// Known failure until issue 12 closes the kd-trees' leaks at split planes.
-TEST_CASE("kd-trees: accelerators agree with brute force with degenerate triangles among good ones",
-          "[stability][!mayfail]") {
+TEST_CASE("kd-trees: accelerators agree with brute force with degenerate triangles among good ones", "[stability]") {
     degenerate_case(true);
 }
 
@@ -237,7 +233,6 @@ TEST_CASE("accelerators agree with brute force at coordinates from 1e-4 to 1e6",
     far_coordinates_case(false);
 }
 
-// Known failure until issue 12 closes the kd-trees' leaks at split planes.
-TEST_CASE("kd-trees: accelerators agree with brute force at coordinates from 1e-4 to 1e6", "[stability][!mayfail]") {
+TEST_CASE("kd-trees: accelerators agree with brute force at coordinates from 1e-4 to 1e6", "[stability]") {
     far_coordinates_case(true);
 }

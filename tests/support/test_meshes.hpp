@@ -126,4 +126,32 @@ inline TriangleMesh grid_box(int n) {
     return m;
 }
 
+/// Unit cubes (side `scale`) in the cells of a 4 x 4 x 4 lattice whose coordinates add up to an even number,
+/// from `offset`, each face two triangles: neighbours touch only at edges, every face lies in a lattice plane
+/// shared by the faces of other cubes, and a kd-tree splits on those planes.
+inline TriangleMesh cube_lattice(float scale, Point3 offset = Point3(0.0f)) {
+    TriangleMesh m;
+    auto quad = [&m](const Point3& o, const Vec3& a, const Vec3& b) {
+        const auto base = static_cast<std::uint32_t>(m.positions.size());
+        m.positions.insert(m.positions.end(), {o, o + a, o + a + b, o + b});
+        m.triangles.push_back({base, base + 1, base + 2});
+        m.triangles.push_back({base, base + 2, base + 3});
+    };
+    const Vec3 x(scale, 0.0f, 0.0f), y(0.0f, scale, 0.0f), z(0.0f, 0.0f, scale);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            for (int k = 0; k < 4; ++k) {
+                if ((i + j + k) % 2) continue;
+                const Point3 o =
+                    offset + scale * Vec3(static_cast<float>(i), static_cast<float>(j), static_cast<float>(k));
+                quad(o, y, x);
+                quad(o + z, x, y);
+                quad(o, x, z);
+                quad(o + y, z, x);
+                quad(o, z, y);
+                quad(o + x, y, z);
+            }
+    return m;
+}
+
 }  // namespace rtlab::test
