@@ -194,7 +194,7 @@ TEST_CASE("instances move, scale and keep normals perpendicular", "[shapes]") {
     CHECK_THROWS_AS(Instance(unit, Mat4(0.0f)), Error);
 }
 
-TEST_CASE("two-step closest hits give the one-step record bit for bit, deferred or not", "[shapes]") {
+TEST_CASE("two-step closest hits give the one-step record bit for bit whether deferred or not", "[shapes]") {
     // Sphere defers its record (its own two steps); Box and Quad take the defaults (intersect twice).
     const Sphere sphere({0.3f, -0.2f, 0.1f}, 1.3f);
     const Box box(AABB{{-1.0f, -0.5f, -0.8f}, {0.7f, 1.1f, 0.9f}});

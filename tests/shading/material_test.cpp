@@ -286,7 +286,7 @@ TEST_CASE("classic and physical conventions differ exactly as defined", "[materi
     CHECK(make("phong")->direct(make("phong")->terms({}), kUp, kUp, Convention::classic).g == Approx(1.0f));
 }
 
-TEST_CASE("cook-torrance is the CookTorranceBrdf times cos, with each Fresnel convention checked by hand",
+TEST_CASE("cook-torrance is the CookTorranceBrdf times cos with each Fresnel convention checked by hand",
           "[material]") {
     // Light 60 degrees off the normal, viewer in the mirror direction: h = n and cos_d = cos 60 = 0.5.
     const Vec3 wi = at_angle(60.0f), wo = at_angle(60.0f, 180.0f);
