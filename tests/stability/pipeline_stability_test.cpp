@@ -7,8 +7,10 @@
 #include <rtlab/core/image.hpp>
 #include <rtlab/geometry/mesh_io.hpp>
 #include <rtlab/render/camera.hpp>
+#include <rtlab/render/plugin.hpp>
 #include <rtlab/render/radiance_source.hpp>
 #include <rtlab/render/renderer.hpp>
+#include <rtlab/render/scene_loader.hpp>
 #include <rtlab/shading/optics.hpp>
 #include <rtlab/textures/image_texture.hpp>
 #include <rtlab/textures/perlin_noise.hpp>
@@ -386,4 +388,50 @@ TEST_CASE("malformed meshes and images give an rtlab Error naming the file", "[s
                 "0"});
     }
     std::filesystem::remove_all(dir);
+}
+
+// Every malformed scene file of tests/render/bad_scenes given to the loader itself (the app's runner,
+// run_bad_scenes.cmake, checks rtlab-render's exit status and output on the same files): each must be one
+// rtlab::Error holding every line its expected.txt names. Cases that need command-line flags (args.txt) are
+// the app's alone.
+TEST_CASE("malformed scene files give an rtlab Error with every expected message", "[stability]") {
+    const std::filesystem::path cases = std::filesystem::path(RTLAB_SOURCE_DIR) / "tests/render/bad_scenes";
+    std::int64_t tried = 0, failures = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(cases)) {
+        if (!entry.is_directory() || std::filesystem::exists(entry.path() / "args.txt")) continue;
+        std::vector<std::string> expected;
+        std::ifstream in(entry.path() / "expected.txt");
+        for (std::string line; std::getline(in, line);)
+            if (!line.empty()) expected.push_back(line);
+        SceneRegistries registries = SceneRegistries::builtins();
+        PluginHost plugins(registries.materials, registries.textures, registries.lights, SearchPath());
+        SceneLoadOptions options;
+        options.use_environment = false;
+        options.registries = &registries;
+        options.plugin_loader = [&](const std::string& name) { plugins.load_by_name(name, "scene.json: plugins"); };
+        std::string message;
+        bool rtlab_error = false;
+        try {
+            (void)load_scene(entry.path() / "scene.json", options);
+        } catch (const Error& e) {
+            rtlab_error = true;
+            message = e.what();
+        } catch (const std::exception& e) {
+            message = std::string("not an rtlab::Error: ") + e.what();
+        }
+        const bool all_named = std::all_of(expected.begin(), expected.end(), [&](const std::string& line) {
+            return message.find(line) != std::string::npos;
+        });
+        const bool ok = rtlab_error && !expected.empty() && all_named;
+        ++tried;
+        failures += !ok;
+        INFO(entry.path().filename().string() << ": " << (message.empty() ? "loaded" : message));
+        CHECK(ok);
+    }
+    CHECK(tried >= 20);
+    record({"loaders", "load_scene (JSON)",
+            "malformed scene files: syntax, types, unknown and duplicate keys, dangling names, bad meshes, sizes, "
+            "plugin paths (tests/render/bad_scenes)",
+            tried, failures, "loaded, or failed without an rtlab::Error holding the expected messages", std::nan(""),
+            "0"});
 }
