@@ -43,6 +43,9 @@ bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, floa
     const float* origin = box_ray.origin;
     const float* inv_dir = box_ray.inv;
     float closest = ray.tmax;
+    // The closest hit plus two margins, against which pop() compares a stacked node's start: updated on the
+    // rare hit rather than a subtraction on every pop.
+    float closest_reach = closest + overlap;
 
     struct Entry {
         std::uint32_t node;
@@ -65,7 +68,7 @@ bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, floa
         while (top != 0) {
             --top;
             if constexpr (!AnyHit)
-                if (closest < stack[top].tmin - overlap) continue;
+                if (closest_reach < stack[top].tmin) continue;
             index = stack[top].node;
             tmin = stack[top].tmin;
             tmax = stack[top].tmax;
@@ -120,6 +123,7 @@ bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, floa
         if (node.primitive_count() != 0 && test_leaf(node, closest)) {
             hit = true;
             if constexpr (AnyHit) return true;
+            closest_reach = closest + overlap;
         }
         if (!pop()) break;
     }
