@@ -5,6 +5,8 @@ find_package(tinyobjloader REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(fmt REQUIRED)
 find_package(Threads REQUIRED)
+# zlib (zlib1g-dev) compresses core's PNG output: stb_image_write's own deflate was 7x slower.
+find_package(ZLIB REQUIRED)
 # OpenEXR 3 (libopenexr-dev) for render's .exr output: float RGB channels.
 find_package(OpenEXR 3 REQUIRED)
 

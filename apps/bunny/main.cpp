@@ -24,13 +24,27 @@ int main(int argc, char** argv) {
         std::filesystem::path path = mesh_name;
         if (!std::filesystem::is_regular_file(path))
             path = rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0])).require(mesh_name);
-        const auto start = std::chrono::steady_clock::now();
-        auto mesh = std::make_shared<const rtlab::TriangleMesh>(rtlab::with_smooth_normals(rtlab::load_mesh(path)));
-        rtlab::RenderJob job = rtlab::bunny::make_bunny_job(mesh, material, options.width, options.height);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        using Clock = std::chrono::steady_clock;
+        auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+        std::shared_ptr<const rtlab::TriangleMesh> mesh;
+        rtlab::RenderJob job;
+        rtlab::MeshLoadInfo info;
+        double read_s = 0.0, normals_s = 0.0, tree_s = 0.0;
+        rtlab::app::run_with_threads(options.threads, [&] {
+            auto t = Clock::now();
+            rtlab::TriangleMesh loaded = rtlab::load_mesh(path, &info);
+            read_s = since(t);
+            t = Clock::now();
+            mesh = std::make_shared<const rtlab::TriangleMesh>(rtlab::with_smooth_normals(std::move(loaded)));
+            normals_s = since(t);
+            t = Clock::now();
+            job = rtlab::bunny::make_bunny_job(mesh, material, options.width, options.height);
+            tree_s = since(t);
+        });
+        for (const auto& w : info.warnings) fmt::print(stderr, "rtlab-bunny: warning: {}: {}\n", path.string(), w);
         if (!options.quiet)
-            fmt::print("{}: {} triangles, loaded with its kd-tree in {:.2f} s\n", path.string(), mesh->triangle_count(),
-                       seconds);
+            fmt::print("{}: {} triangles, read in {:.2f} s, smooth normals {:.2f} s, kd-tree {:.2f} s\n", path.string(),
+                       mesh->triangle_count(), read_s, normals_s, tree_s);
         rtlab::app::apply_course_options(options, job);
         return rtlab::app::run_course_render(job, options, options.output, "bunny (" + material + ")").interrupted ? 130
                                                                                                                    : 0;

@@ -2,6 +2,7 @@
 //   [--tonemap OP] [--seed N] [--data-dir DIR]... [--plugin FILE.so]... [--plugin-dir DIR]... [--quiet] | --list
 // Exit status: 0 rendered, 1 bad scene or failed write (nothing written), 2 usage, 130 stopped by Ctrl-C (what
 // was rendered is written).
+#include <rtlab/app/course_app.hpp>
 #include <rtlab/app/progress_bar.hpp>
 #include <rtlab/app/stop_on_interrupt.hpp>
 #include <rtlab/core/error.hpp>
@@ -48,7 +49,11 @@ int run(const rtlab::app::RenderOptions& options) {
     const std::string context = options.scene.string() + ": plugins";
     load.plugin_loader = [&](const std::string& name) { plugins.load_by_name(name, context); };
     load.overrides = options.overrides;
-    const rtlab::LoadedScene scene = rtlab::load_scene(options.scene, load);
+    // The meshes' kd-trees are built while loading: on the --threads given, as the render runs (a thread count
+    // set in the scene file alone is known only once it is loaded, so that build uses every core).
+    rtlab::LoadedScene scene;
+    rtlab::app::run_with_threads(options.overrides.threads.value_or(0),
+                                 [&] { scene = rtlab::load_scene(options.scene, load); });
     const std::filesystem::path output = options.output.empty() ? scene.output : options.output;
     if (output.empty()) throw rtlab::Error(options.scene.string() + ": no output: give -o FILE or render.output");
     rtlab::output_format(output);  // an unknown extension fails before the render, not after

@@ -6,7 +6,9 @@
 #include <rtlab/render/pixel_sampler.hpp>
 
 #include <fmt/core.h>
+#include <tbb/task_arena.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -124,18 +126,25 @@ CourseRenderResult run_course_render(const RenderJob& job, const CourseOptions& 
     }
     result.stats = rendered.stats;
     if (output.has_parent_path()) fs::create_directories(output.parent_path());
+    const auto write_start = std::chrono::steady_clock::now();
     write_render_output(rendered.image, output, tone.get());
+    result.write_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
     if (!o.quiet) {
         const RenderStats& s = rendered.stats;
         fmt::print(
             "{}: {}x{} in {:.2f} s ({:.2f} CPU s), {:.2f} Mrays/s ({} camera, {} shadow, {} reflected, {} refracted){} "
-            "-> {}\n",
+            "-> {} (written in {:.2f} s)\n",
             label, rendered.image.width(), rendered.image.height(), s.seconds, result.cpu_seconds,
             s.rays_per_second() * 1e-6, s.rays.camera, s.rays.shadow, s.rays.reflected, s.rays.refracted,
-            result.interrupted ? " INTERRUPTED, partial image" : "", output.string());
+            result.interrupted ? " INTERRUPTED, partial image" : "", output.string(), result.write_seconds);
         std::fflush(stdout);
     }
     return result;
+}
+
+void run_with_threads(int threads, const std::function<void()>& body) {
+    if (threads <= 0) return body();
+    tbb::task_arena(threads).execute(body);
 }
 
 int run_app(const char* name, const std::function<int()>& body) {

@@ -64,15 +64,21 @@ struct CourseRenderResult {
     /// Processor seconds the process spent in the render, all threads together (std::clock): on a machine
     /// shared with other work this says what the render cost, where stats.seconds also counts the waiting.
     double cpu_seconds = 0.0;
+    double write_seconds = 0.0;  ///< tone mapping, encoding and writing the output file
     bool interrupted = false;
 };
 
 /// Renders `job` with the progress bar (stderr, a terminal, not --quiet) and Ctrl-C as "stop and write what
 /// is done", writes `output` with write_render_output (PNG through --tonemap, else linear), and prints one
-/// summary line to stdout unless quiet ("whitted: 640x480 in 1.23 s (2.40 CPU s), 1.62 Mrays/s (...) -> OUT";
-/// scripts/peer-povray.sh reads both times). `label` starts the summary ("whitted", "solar frame 3").
+/// summary line to stdout unless quiet ("whitted: 640x480 in 1.23 s (2.40 CPU s), 1.62 Mrays/s (...) -> OUT (written in
+/// 0.05 s)"; scripts/peer-povray.sh reads both times). `label` starts the summary ("whitted", "solar frame 3").
 CourseRenderResult run_course_render(const RenderJob& job, const CourseOptions& options,
                                      const std::filesystem::path& output, const std::string& label);
+
+/// Runs `body` inside a oneTBB arena of `threads` threads (0: every core), so that the parallel work of building
+/// a scene (the kd-tree of a mesh) honours --threads as the render does: `--threads 1` is one thread from start
+/// to finish, not one thread for the render after a build on every core.
+void run_with_threads(int threads, const std::function<void()>& body);
 
 /// The body of a course app's main: runs `body` and returns its status; an exception becomes
 /// "NAME: message" on stderr and exit status 1.
