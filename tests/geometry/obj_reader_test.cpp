@@ -146,6 +146,44 @@ TEST_CASE("OBJ face indices that do not name a vertex are errors naming the file
     CHECK(rejected == static_cast<int>(std::size(cases)));
 }
 
+TEST_CASE("OBJ faces may name vertices defined later in the file", "[obj]") {
+    // The loader checks a file in one pass: a positive index beyond the vertices read so far is settled against
+    // the file's totals at its end.
+    const auto path = write_file("forward.obj",
+                                 "f 1 2 3\nf 1/1 3/3 4/2\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+                                 "vt 0 0\nvt 1 0\nvt 0 1\n");
+    const TriangleMesh m = load_obj(path);
+    REQUIRE(m.triangle_count() == 2);
+    CHECK(m.corner(0, 1) == Point3(1, 0, 0));
+    CHECK(m.corner(1, 2) == Point3(1, 1, 0));
+}
+
+TEST_CASE("OBJ errors name the first bad line when a forward index comes before another error", "[obj]") {
+    struct Bad {
+        const char* name;
+        std::string content;
+        const char* error;
+    };
+    const Bad cases[] = {
+        // Index 5 at line 1 is out of range for the file's 4 vertices: that is the first error, not line 3.
+        {"fwdfirst.obj", "f 1 2 5\nv 0 0 0\nv 1 nan 0\nv 0 1 0\nv 1 1 0\n",
+         "line 1: vertex index 5 out of range (4 vertices)"},
+        // Index 4 at line 1 is legal (4 vertices in all): the error is line 3's.
+        {"fwdlegal.obj", "f 1 2 4\nv 0 0 0\nv 1 nan 0\nv 0 1 0\nv 1 1 0\n", "line 3: vertex coordinate 2"},
+        // On one line, the corner first in the line decides: index 9 before the malformed corner.
+        {"fwdsameline.obj", kTriangle + "f 1 9 x\n", "line 4: vertex index 9 out of range (3 vertices)"},
+        {"fwduv.obj", "f 1/4 2/1 3/1\n" + kTriangle + "vt 0 0\nvt 1 0\nf 1 2 0\n",
+         "line 1: texture coordinate index 4 out of range (2 texture coordinates)"},
+        // Counted to the file's end, past the line with the other error.
+        {"fwdlater.obj", "f 1 2 4\nv 0 0 0\nv 1 0 0\nf 1 2 0\nv 0 1 0\nv 1 1 0\n", "line 4: vertex index 0"},
+    };
+    for (const auto& c : cases) {
+        INFO(c.name);
+        const auto path = write_file(c.name, c.content);
+        CHECK_THROWS_WITH(load_obj(path), Contains(c.name) && Contains(c.error));
+    }
+}
+
 TEST_CASE("OBJ face corners in every legal form still load", "[obj]") {
     // v, v/vt, v//vn, v/vt/vn, positive and relative, '+' signs, tabs, CRLF and trailing blanks.
     const auto path = write_file("forms.obj", kTriangleUvNormal +

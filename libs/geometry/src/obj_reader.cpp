@@ -33,19 +33,20 @@ struct CornerKeyHash {
     }
 };
 
-// Calls f(line, line_number) for every line as tinyobjloader splits them (at \n, \r\n or a lone \r), cut at
-// a NUL as its C-string parsing is, with leading blanks dropped as it drops them.
+// Calls f(line, line_number, offset of the line in text) for every line as tinyobjloader splits them (at \n, \r\n or a
+// lone \r), cut at a NUL as its C-string parsing is, with leading blanks dropped as it drops them.
 template <class F>
 void for_each_line(std::string_view text, F&& f) {
     std::size_t line_no = 0, pos = 0;
     while (pos < text.size()) {
+        const std::size_t start = pos;
         std::size_t end = pos;
         while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
         std::string_view line = text.substr(pos, end - pos);
         pos = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
         line = line.substr(0, line.find('\0'));
         const std::size_t first = line.find_first_not_of(" \t");
-        f(first == std::string_view::npos ? std::string_view() : line.substr(first), ++line_no);
+        f(first == std::string_view::npos ? std::string_view() : line.substr(first), ++line_no, start);
     }
 }
 
@@ -99,54 +100,33 @@ struct ElementCounts {
     std::int64_t positions = 0, uvs = 0, normals = 0;
 };
 
-// One index of a face corner, already known to be [+-]digits. Positive indices count from the file's first
-// element of the kind, up to the file's last (tinyobjloader accepts forward references); negative ones back
-// from the last read before this line. tinyobjloader reads them with atoi, which wraps an index too large for
-// an int around to any other, so the digits are read here in 64 bits and checked against both limits.
-void check_index(std::string_view text, std::int64_t so_far, std::int64_t total, const IndexedKind& kind,
-                 const LineError& fail) {
-    const bool negative = text.front() == '-';
+// A positive index beyond the elements read so far: legal when the file defines the element later (tinyobjloader
+// reads forward references), so it is settled against the file's totals once they are known.
+struct ForwardIndex {
+    std::size_t line;
+    std::string text;
+    const IndexedKind* kind;
+    std::int64_t magnitude;  // -1: too large for an int
+};
+
+// The digits of an index, already known to be [+-]digits, as a magnitude; -1 when too large for an int.
+// tinyobjloader reads them with atoi, which wraps an index too large for an int around to any other, so the
+// digits are read here in 64 bits and checked against both limits.
+std::int64_t index_magnitude(std::string_view text) {
     const std::string_view digits = text.substr(text.front() == '-' || text.front() == '+' ? 1 : 0);
     std::int64_t magnitude = 0;
     const auto [p, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), magnitude);
-    const bool huge = ec == std::errc::result_out_of_range || magnitude > std::numeric_limits<int>::max();
-    auto what = [&] { return std::string(kind.name) + " index " + std::string(text); };
-    if (!huge && magnitude == 0) fail(what() + ": OBJ indices start at 1");
-    if (!negative && (huge || magnitude > total))
-        fail(what() + " out of range (" + std::to_string(total) + " " + kind.plural + ")");
-    if (negative && (huge || magnitude > so_far))
-        fail(what() + " reaches before the first " + kind.name + " (" + std::to_string(so_far) + " " + kind.plural +
-             " so far)");
+    return ec == std::errc::result_out_of_range || magnitude > std::numeric_limits<int>::max() ? -1 : magnitude;
+}
+
+[[noreturn]] void fail_out_of_range(const ForwardIndex& f, std::int64_t total, const std::filesystem::path& path) {
+    LineError{path, f.line}(std::string(f.kind->name) + " index " + f.text + " out of range (" + std::to_string(total) +
+                            " " + f.kind->plural + ")");
 }
 
 bool is_index(std::string_view s) {
     if (!s.empty() && (s.front() == '-' || s.front() == '+')) s.remove_prefix(1);
     return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
-// "f c1 c2 ...", each corner v, v/vt, v//vn or v/vt/vn. Returns the number of corners.
-std::size_t check_face(std::string_view line, const ElementCounts& so_far, const ElementCounts& total,
-                       const LineError& fail) {
-    std::size_t pos = 1, corners = 0;
-    for (std::string_view corner = next_word(line, pos); !corner.empty(); corner = next_word(line, pos), ++corners) {
-        const auto n = 1 + static_cast<std::size_t>(std::count(corner.begin(), corner.end(), '/'));
-        std::string_view slot[3];  // v, vt, vn
-        for (std::size_t k = 0, start = 0; k < n && k < 3; ++k) {
-            const std::size_t slash = corner.find('/', start);
-            slot[k] = corner.substr(start, slash == std::string_view::npos ? slash : slash - start);
-            start = slash + 1;
-        }
-        const bool well_formed = n <= 3 && is_index(slot[0]) &&
-                                 (n < 2 || is_index(slot[1]) || (n == 3 && slot[1].empty())) &&
-                                 (n < 3 || is_index(slot[2]));
-        if (!well_formed)
-            fail("face corner '" + std::string(corner) +
-                 "' is malformed (v, v/vt, v//vn or v/vt/vn with integer indices)");
-        check_index(slot[0], so_far.positions, total.positions, kVertex, fail);
-        if (n >= 2 && !slot[1].empty()) check_index(slot[1], so_far.uvs, total.uvs, kUv, fail);
-        if (n == 3) check_index(slot[2], so_far.normals, total.normals, kNormal, fail);
-    }
-    return corners;
 }
 
 // Faces with fewer than 3 corners, which tinyobjloader drops without a word (FORMATS.md drops them too).
@@ -156,29 +136,108 @@ struct ShortFaces {
 };
 
 // The vertex and face lines tinyobjloader will read, checked first, which also gives the line number for the
-// error.
-ShortFaces check_lines(const std::filesystem::path& path) {
-    const std::vector<unsigned char> bytes = read_binary_file(path);
-    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-    auto count = [](ElementCounts& counts, std::string_view line) {
-        if (starts_statement(line, "v"))
+// error. One pass: an index is checked against the elements read so far (negative ones count back from there);
+// a positive one beyond them is kept and settled at the end against the file's totals. An error found on the way
+// first settles the forward indices of earlier lines against totals counted over the rest of the file, so the
+// error reported is always the first in the file, as a check against the totals up front would find it.
+class LineChecker {
+public:
+    explicit LineChecker(const std::filesystem::path& path) : m_path(path) {}
+
+    ShortFaces run(std::string_view text) {
+        for_each_line(text, [&](std::string_view line, std::size_t line_no, std::size_t line_start) {
+            try {
+                check(line, line_no);
+            } catch (const Error&) {
+                if (!m_forward.empty()) {
+                    ElementCounts total = m_so_far;
+                    for_each_line(text.substr(line_start),
+                                  [&](std::string_view rest, std::size_t, std::size_t) { count(total, rest); });
+                    settle(total);
+                }
+                throw;
+            }
+            count(m_so_far, line);
+        });
+        settle(m_so_far);
+        return m_short;
+    }
+
+private:
+    static void count(ElementCounts& counts, std::string_view line) {
+        if (line.size() < 2 || line[0] != 'v') return;
+        if (is_blank(line[1]))
             ++counts.positions;
         else if (starts_statement(line, "vt"))
             ++counts.uvs;
         else if (starts_statement(line, "vn"))
             ++counts.normals;
-    };
-    ElementCounts total, so_far;
-    ShortFaces short_faces;
-    for_each_line(text, [&](std::string_view line, std::size_t) { count(total, line); });
-    for_each_line(text, [&](std::string_view line, std::size_t line_no) {
-        const LineError fail{path, line_no};
-        if (starts_statement(line, "v")) check_vertex(line, fail);
-        if (starts_statement(line, "f") && check_face(line, so_far, total, fail) < 3 && short_faces.count++ == 0)
-            short_faces.first_line = line_no;
-        count(so_far, line);
-    });
-    return short_faces;
+    }
+
+    static std::int64_t of_kind(const ElementCounts& c, const IndexedKind* kind) {
+        return kind == &kVertex ? c.positions : kind == &kUv ? c.uvs : c.normals;
+    }
+
+    void settle(const ElementCounts& total) const {
+        for (const ForwardIndex& f : m_forward)
+            if (f.magnitude < 0 || f.magnitude > of_kind(total, f.kind))
+                fail_out_of_range(f, of_kind(total, f.kind), m_path);
+    }
+
+    void check(std::string_view line, std::size_t line_no) {
+        if (starts_statement(line, "v")) check_vertex(line, LineError{m_path, line_no});
+        if (starts_statement(line, "f") && check_face(line, line_no) < 3 && m_short.count++ == 0)
+            m_short.first_line = line_no;
+    }
+
+    void check_index(std::string_view text, const IndexedKind& kind, std::size_t line_no) {
+        const LineError fail{m_path, line_no};
+        const bool negative = text.front() == '-';
+        const std::int64_t magnitude = index_magnitude(text);
+        const std::int64_t so_far = of_kind(m_so_far, &kind);
+        auto what = [&] { return std::string(kind.name) + " index " + std::string(text); };
+        if (magnitude == 0) fail(what() + ": OBJ indices start at 1");
+        if (negative && (magnitude < 0 || magnitude > so_far))
+            fail(what() + " reaches before the first " + kind.name + " (" + std::to_string(so_far) + " " + kind.plural +
+                 " so far)");
+        if (!negative && (magnitude < 0 || magnitude > so_far))
+            m_forward.push_back({line_no, std::string(text), &kind, magnitude});
+    }
+
+    // "f c1 c2 ...", each corner v, v/vt, v//vn or v/vt/vn. Returns the number of corners.
+    std::size_t check_face(std::string_view line, std::size_t line_no) {
+        std::size_t pos = 1, corners = 0;
+        for (std::string_view corner = next_word(line, pos); !corner.empty();
+             corner = next_word(line, pos), ++corners) {
+            const auto n = 1 + static_cast<std::size_t>(std::count(corner.begin(), corner.end(), '/'));
+            std::string_view slot[3];  // v, vt, vn
+            for (std::size_t k = 0, start = 0; k < n && k < 3; ++k) {
+                const std::size_t slash = corner.find('/', start);
+                slot[k] = corner.substr(start, slash == std::string_view::npos ? slash : slash - start);
+                start = slash + 1;
+            }
+            const bool well_formed = n <= 3 && is_index(slot[0]) &&
+                                     (n < 2 || is_index(slot[1]) || (n == 3 && slot[1].empty())) &&
+                                     (n < 3 || is_index(slot[2]));
+            if (!well_formed)
+                LineError{m_path, line_no}("face corner '" + std::string(corner) +
+                                           "' is malformed (v, v/vt, v//vn or v/vt/vn with integer indices)");
+            check_index(slot[0], kVertex, line_no);
+            if (n >= 2 && !slot[1].empty()) check_index(slot[1], kUv, line_no);
+            if (n == 3) check_index(slot[2], kNormal, line_no);
+        }
+        return corners;
+    }
+
+    const std::filesystem::path& m_path;
+    ElementCounts m_so_far;
+    std::vector<ForwardIndex> m_forward;
+    ShortFaces m_short;
+};
+
+ShortFaces check_lines(const std::filesystem::path& path) {
+    const std::vector<unsigned char> bytes = read_binary_file(path);
+    return LineChecker(path).run(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 }  // namespace
