@@ -13,6 +13,14 @@ using namespace rtlab;
 using Catch::Matchers::Contains;
 
 namespace {
+struct BadFileCase {
+    const char* name;
+    std::string content;
+    const char* error;
+};
+}  // namespace
+
+namespace {
 const auto dir = test::scratch_dir("geometry_ply");
 
 std::filesystem::path write_file(const std::string& name, const std::string& content) {
@@ -88,6 +96,8 @@ TEST_CASE("binary PLY in both byte orders with any property order and types", "[
         MeshLoadInfo info;
         const TriangleMesh m = load_ply(write_file(big ? "be.ply" : "le.ply", header + b.data), &info);
         CHECK(info.format == (big ? "ply binary_big_endian" : "ply binary_little_endian"));
+        CHECK(info.warnings ==
+              std::vector<std::string>{"1 face with fewer than 3 corners dropped (element 'face' #1)"});
         REQUIRE(m.vertex_count() == 3);
         REQUIRE(m.triangle_count() == 1);
         CHECK(m.positions[1] == Point3(1, 0, 0.5f));
@@ -95,6 +105,58 @@ TEST_CASE("binary PLY in both byte orders with any property order and types", "[
         CHECK(m.normals[2] == Normal3(0, 0, 1));
         REQUIRE(m.has_uvs());
         CHECK(m.uvs[2] == Vec2(0, 1));
+    }
+}
+
+TEST_CASE("PLY faces with fewer than 3 corners are dropped with a warning naming the first", "[ply]") {
+    // Line 11 is the first data line; the faces start at line 15.
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 5\nproperty list uchar int vertex_indices\n"
+        "property uchar flags\nend_header\n";
+    const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+    MeshLoadInfo info;
+    const TriangleMesh m =
+        load_mesh(write_file("short.ply", header + vertices + "3 0 1 2 7\n2 0 1 7\n0 7\n4 0 1 2 3 7\n1 3 7\n"), &info);
+    REQUIRE(m.triangle_count() == 3);
+    CHECK(m.triangles[1] == std::array<std::uint32_t, 3>{0, 1, 2});
+    CHECK(m.triangles[2] == std::array<std::uint32_t, 3>{0, 2, 3});
+    CHECK(info.warnings ==
+          std::vector<std::string>{"3 faces with fewer than 3 corners dropped (line 16: element 'face' #1 and later)"});
+
+    MeshLoadInfo clean;
+    CHECK(load_ply(write_file("fine.ply", header + vertices +
+                                              "3 0 1 2 7\n3 0 2 3 7\n3 1 2 3 7\n3 0 1 3 7\n"
+                                              "3 0 1 2 7\n"),
+                   &clean)
+              .triangle_count() == 5);
+    CHECK(clean.warnings.empty());
+}
+
+TEST_CASE("a PLY file left with no triangle is an error", "[ply]") {
+    const std::string vertex_header =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\n";
+    const std::string face_header = "property list uchar int vertex_indices\nend_header\n";
+    const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+    const BadFileCase cases[] = {
+        {"segment.ply", vertex_header + "element face 1\n" + face_header + vertices + "2 0 1\n",
+         "no triangles: 1 face with fewer than 3 corners dropped (line 13: element 'face' #0)"},
+        {"segments.ply", vertex_header + "element face 2\n" + face_header + vertices + "2 0 1\n0\n",
+         "no triangles: 2 faces with fewer than 3 corners dropped (line 13: element 'face' #0 and later)"},
+        {"nofaces.ply", vertex_header + "element face 0\n" + face_header + vertices, "no faces"},
+        {"points.ply", vertex_header + "end_header\n" + vertices, "no faces"},
+        {"segmentbin.ply",
+         "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+             std::string(24, '\0') + std::string("\x02\x00\x00\x00\x00\x01\x00\x00\x00", 9),
+         "no triangles: 1 face with fewer than 3 corners dropped (element 'face' #0)"},
+    };
+    for (const auto& c : cases) {
+        INFO(c.name);
+        const auto path = write_file(c.name, c.content);
+        CHECK_THROWS_AS(load_ply(path), Error);
+        CHECK_THROWS_WITH(load_mesh(path), Contains(c.name) && Contains(c.error));
     }
 }
 

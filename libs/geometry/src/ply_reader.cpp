@@ -89,6 +89,13 @@ public:
         TriangleMesh mesh;
         for (std::size_t e = 0; e < m_elements.size(); ++e) read_element(e, mesh);
         if (m_vertex_element < 0) fail("no 'vertex' element");
+        // As the OBJ reader reports them: a count and the first, a warning, or the error when nothing is left.
+        const std::uint64_t dropped = m_short_faces;
+        const std::string dropped_text = std::to_string(dropped) + (dropped == 1 ? " face" : " faces") +
+                                         " with fewer than 3 corners dropped (" + m_first_short_face +
+                                         (dropped == 1 ? ")" : " and later)");
+        if (mesh.triangles.empty()) fail(dropped ? "no triangles: " + dropped_text : std::string("no faces"));
+        if (dropped && info) info->warnings.push_back(dropped_text);
         if (info) {
             info->format = m_format == PlyFormat::ascii                  ? "ply ascii"
                            : m_format == PlyFormat::binary_little_endian ? "ply binary_little_endian"
@@ -393,6 +400,7 @@ private:
                     corners.push_back(static_cast<std::uint32_t>(v));
                 }
                 // Fan (c0, c1, c2), (c0, c2, c3), ... in place; faces with fewer than 3 corners are dropped.
+                if (corners.size() < 3 && m_short_faces++ == 0) m_first_short_face = where(el, i);
                 for (std::size_t c = 2; c < corners.size(); ++c)
                     mesh.triangles.push_back({corners[0], corners[c - 1], corners[c]});
             }
@@ -407,6 +415,8 @@ private:
     std::vector<PlyElement> m_elements;
     int m_vertex_element = -1;
     int m_face_element = -1;
+    std::uint64_t m_short_faces = 0;  ///< faces with fewer than 3 corners, dropped
+    std::string m_first_short_face;   ///< where() of the first
 };
 
 }  // namespace

@@ -10,8 +10,10 @@ namespace rtlab {
 
 /// \brief What a loader reports besides the mesh.
 struct MeshLoadInfo {
-    std::string format;                 ///< "ply ascii", "ply binary_little_endian", "obj", ...
-    std::vector<std::string> warnings;  ///< non-fatal problems (a missing .mtl, say)
+    std::string format;  ///< "ply ascii", "ply binary_little_endian", "obj", ...
+    /// Non-fatal problems: a missing .mtl; faces with fewer than 3 corners, dropped (their count and the first,
+    /// by line in OBJ and ASCII PLY, by element index in PLY). A file left with no triangle is an error.
+    std::vector<std::string> warnings;
 };
 
 /// Loads by extension (.ply or .obj, any case). Bad input throws rtlab::Error naming the file, the
