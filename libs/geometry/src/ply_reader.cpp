@@ -5,6 +5,7 @@
 #include <rtlab/core/file.hpp>
 #include <rtlab/geometry/mesh_io.hpp>
 
+#include <array>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -209,7 +210,8 @@ private:
 
     // --- values ----------------------------------------------------------------------------------------
     double read_value(PlyType type, const PlyElement& el, std::uint64_t index) {
-        if (m_format == PlyFormat::ascii) return read_ascii_value(el, index);
+        if (m_format == PlyFormat::ascii)
+            return read_ascii_value(el, index, type != PlyType::f32 && type != PlyType::f64);
         const std::size_t size = type_size(type);
         if (m_bytes.size() - m_pos < size)
             fail("truncated data in element '" + el.name + "' #" + std::to_string(index));
@@ -261,22 +263,42 @@ private:
         return 0.0;
     }
 
-    double read_ascii_value(const PlyElement& el, std::uint64_t index) {
+    // Blanks between ASCII values; a table, as this runs for every byte of the data (about 20 instructions a byte
+    // with four comparisons per byte before, for the 7.3 MB dragon).
+    static bool is_separator(char c) {
+        static constexpr auto kTable = [] {
+            std::array<bool, 256> t{};
+            t[' '] = t['\t'] = t['\r'] = t['\n'] = true;
+            return t;
+        }();
+        return kTable[static_cast<unsigned char>(c)];
+    }
+
+    double read_ascii_value(const PlyElement& el, std::uint64_t index, bool integer) {
         const auto* text = reinterpret_cast<const char*>(m_bytes.data());
         const std::size_t end = m_bytes.size();
-        while (m_pos < end &&
-               (text[m_pos] == ' ' || text[m_pos] == '\t' || text[m_pos] == '\r' || text[m_pos] == '\n')) {
+        while (m_pos < end && is_separator(text[m_pos])) {
             if (text[m_pos] == '\n') ++m_data_line;
             ++m_pos;
         }
         if (m_pos >= end)
             fail("truncated data in element '" + el.name + "' #" + std::to_string(index) + " (end of file)");
         std::size_t stop = m_pos;
-        while (stop < end && text[stop] != ' ' && text[stop] != '\t' && text[stop] != '\r' && text[stop] != '\n')
-            ++stop;
-        double value = 0.0;
+        while (stop < end && !is_separator(text[stop])) ++stop;
         const char* first = text + m_pos;
         if (*first == '+') ++first;  // from_chars does not accept a leading '+'
+        // Indices and list lengths are integers: read as such they cost a third of a double's parse. Anything
+        // else (1.5, 2e0, too many digits) takes the double path, which decides as before.
+        if (integer) {
+            std::int64_t whole = 0;
+            const auto [p, ec] = std::from_chars(first, text + stop, whole);
+            if (ec == std::errc() && p == text + stop && whole > -(std::int64_t{1} << 53) &&
+                whole < (std::int64_t{1} << 53)) {
+                m_pos = stop;
+                return static_cast<double>(whole);
+            }
+        }
+        double value = 0.0;
         const auto [p, ec] = std::from_chars(first, text + stop, value);
         if (ec != std::errc() || p != text + stop)
             fail_line(m_data_line, "element '" + el.name + "' #" + std::to_string(index) + ": bad number '" +
