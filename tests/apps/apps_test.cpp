@@ -176,6 +176,39 @@ TEST_CASE("bunny: any mesh stands in the middle of the picture on the floor", "[
                       Catch::Contains("diffuse, phong, mirror, glass"));
 }
 
+TEST_CASE("rtlab-bunny reports the faces a mesh loader dropped and renders the rest", "[apps]") {
+    const auto dir = test::scratch_dir("apps_bunny_warning");
+    // An octahedron's upper half as a PLY, with a two-corner face between its triangles, on one thread.
+    const auto mesh = dir / "short-face.ply";
+    std::ofstream(mesh) << "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+                           "property float z\nelement face 5\nproperty list uchar int vertex_indices\nend_header\n"
+                           "1 0 0\n-1 0 0\n0 0 1\n0 0 -1\n0 1 0\n"
+                           "3 0 4 2\n2 2 4\n3 2 4 1\n3 1 4 3\n3 3 4 0\n";
+    const auto out = dir / "short-face.pfm";
+    std::filesystem::remove(out);
+    const auto run = run_app(
+        BUNNY_EXE,
+        "--width 32 --height 24 --aa none --quiet --threads 1 --mesh '" + mesh.string() + "' -o '" + out.string() + "'",
+        dir);
+    REQUIRE(run.status == 0);
+    CHECK_THAT(run.err, Catch::Matchers::Contains("rtlab-bunny: warning: " + mesh.string() +
+                                                  ": 1 face with fewer than 3 corners dropped (line 16: element "
+                                                  "'face' #1)"));
+    CHECK(std::filesystem::is_regular_file(out));
+
+    // Left with no triangle, the mesh is an error naming the file, and nothing is written.
+    const auto segment = dir / "segment.ply";
+    std::ofstream(segment) << "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+                              "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                              "0 0 0\n1 0 0\n2 0 1\n";
+    const auto none = dir / "segment.pfm";
+    std::filesystem::remove(none);
+    const auto bad = run_app(BUNNY_EXE, "--quiet --mesh '" + segment.string() + "' -o '" + none.string() + "'", dir);
+    CHECK(bad.status == 1);
+    CHECK_THAT(bad.err, Catch::Matchers::Contains("segment.ply") && Catch::Matchers::Contains("no triangles"));
+    CHECK_FALSE(std::filesystem::exists(none));
+}
+
 TEST_CASE("rtlab-bunny renders the Stanford bunny in each material", "[apps]") {
     const auto shared = test::shared_dir();
     if (!shared) {
