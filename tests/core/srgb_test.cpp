@@ -1,3 +1,4 @@
+#include <rtlab/core/color.hpp>
 #include <rtlab/core/rng.hpp>
 #include <rtlab/core/srgb.hpp>
 
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 using namespace rtlab;
 
@@ -60,4 +62,22 @@ TEST_CASE("srgb_encode_8bit matches the exact formula on random values and the s
     CHECK(srgb_encode_8bit(0x1.fffffep-1f) == 255);
     CHECK(srgb_encode_8bit(L::infinity()) == 255);
     CHECK(srgb_encode_8bit(-L::infinity()) == 0);
+}
+
+TEST_CASE("srgb_encode_8bit over pixels gives each channel's code in r g b order", "[core][srgb]") {
+    using L = std::numeric_limits<float>;
+    Rng rng(12);
+    std::vector<RGB> pixels = {{L::quiet_NaN(), -1.0f, 1.0f},
+                               {L::infinity(), -L::infinity(), 0x1.fffffep-1f},
+                               {0.0031308f, 0.5f, L::denorm_min()}};
+    for (int i = 0; i < 100000; ++i) pixels.emplace_back(rng.uniform(), rng.uniform() * 1.5f - 0.25f, rng.uniform());
+    std::vector<std::uint8_t> codes(3 * pixels.size(), 77);
+    srgb_encode_8bit(pixels.data(), pixels.size(), codes.data());
+    std::uint64_t bad = 0;
+    for (std::size_t i = 0; i < pixels.size(); ++i)
+        for (int k = 0; k < 3; ++k) bad += codes[3 * i + static_cast<std::size_t>(k)] != exact_code(pixels[i][k]);
+    CHECK(bad == 0);
+    CHECK(codes[0] == 0);
+    CHECK(codes[2] == 255);
+    CHECK(codes[3] == 255);
 }

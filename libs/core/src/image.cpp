@@ -175,11 +175,14 @@ void write_png(const Image& image, const std::filesystem::path& path) {
     if (image.empty()) fail(path, "cannot write an empty image");
     const int channels = image.has_alpha() ? 4 : 3;
     std::vector<unsigned char> bytes;
-    bytes.reserve(image.pixel_count() * channels);
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            for (int k = 0; k < 3; ++k) bytes.push_back(srgb_encode_8bit(image.at(x, y)[k]));
-            if (channels == 4) {
+    if (channels == 3) {
+        bytes.resize(image.pixel_count() * 3);
+        srgb_encode_8bit(image.pixels().data(), image.pixels().size(), bytes.data());
+    } else {
+        bytes.reserve(image.pixel_count() * channels);
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                for (int k = 0; k < 3; ++k) bytes.push_back(srgb_encode_8bit(image.at(x, y)[k]));
                 const float a = image.alpha(x, y);  // linear; NaN is written as 0, like colour
                 bytes.push_back(a >= 0.0f ? static_cast<unsigned char>(std::lround(std::min(a, 1.0f) * 255.0f)) : 0);
             }

@@ -1,3 +1,4 @@
+#include <rtlab/core/color.hpp>
 #include <rtlab/core/srgb.hpp>
 
 #include <array>
@@ -66,9 +67,22 @@ private:
 
 }  // namespace
 
-std::uint8_t srgb_encode_8bit(float linear) {
+namespace {
+const Encoder8& encoder8() {
     static const Encoder8 encoder;
-    return encoder.encode(linear);
+    return encoder;
+}
+}  // namespace
+
+std::uint8_t srgb_encode_8bit(float linear) { return encoder8().encode(linear); }
+
+void srgb_encode_8bit(const RGB* pixels, std::size_t count, std::uint8_t* out) {
+    const Encoder8& encoder = encoder8();
+    for (std::size_t i = 0; i < count; ++i) {
+        out[3 * i] = encoder.encode(pixels[i].r);
+        out[3 * i + 1] = encoder.encode(pixels[i].g);
+        out[3 * i + 2] = encoder.encode(pixels[i].b);
+    }
 }
 
 float srgb_decode_8bit(std::uint8_t code) {
