@@ -1083,12 +1083,11 @@ private:
                     whitted.environment = it->second.object;
             } else if (sky.is_object()) {
                 whitted.environment = make_texture(sky, at("skybox"), false);
+            } else {
+                error(at("skybox"), "expected a texture name or an inline texture (a cubemap), not " + describe(sky));
             }
             if (auto a = m_auto_lod.find(whitted.environment.get()); a != m_auto_lod.end())
                 a->second.environment = true;
-            else {
-                error(at("skybox"), "expected a texture name or an inline texture (a cubemap), not " + describe(sky));
-            }
         }
         read_tonemap(r, at("tonemap"));
         if (r.contains("output")) {
