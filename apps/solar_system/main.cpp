@@ -5,7 +5,7 @@
 
 #include <rtlab/app/course_app.hpp>
 #include <rtlab/render/image_output.hpp>
-#include <rtlab/render/pixel_sampler.hpp>
+#include <rtlab/render/texture_level.hpp>
 
 #include <fmt/core.h>
 
@@ -32,14 +32,12 @@ int main(int argc, char** argv) {
         const rtlab::solar::SolarAssets assets = rtlab::solar::load_solar_assets(data, procedural);
         if (!options.quiet) fmt::print("{}\n", assets.note);
         for (int f = r.first; f < r.last; ++f) {
-            rtlab::solar::SolarView view{options.width, options.height, f, count, !unfiltered, 1.0f};
+            rtlab::solar::SolarView view{options.width, options.height, f, count, !unfiltered, 4.0f};
             // The settings first (the scene's and the flags'), for the samples the map levels allow for.
             rtlab::RenderJob job = rtlab::solar::make_solar_job(assets, view);
             rtlab::app::apply_course_options(options, job);
             const rtlab::RenderSettings& s = job.settings;
-            view.samples_per_pixel = s.pattern == rtlab::PixelPattern::adaptive
-                                         ? 4.0f
-                                         : static_cast<float>(rtlab::pattern_sample_count(s.pattern, s.spp));
+            view.samples_per_pixel = rtlab::filtering_samples(s);
             const rtlab::RenderSettings settings = job.settings;
             job = rtlab::solar::make_solar_job(assets, view);
             job.settings = settings;

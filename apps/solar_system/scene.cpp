@@ -1,19 +1,18 @@
 #include "scene.hpp"
 
 #include <rtlab/core/error.hpp>
-#include <rtlab/core/sample_hash.hpp>
 #include <rtlab/geometry/disk.hpp>
 #include <rtlab/geometry/instance.hpp>
 #include <rtlab/geometry/sphere.hpp>
+#include <rtlab/render/scene_loader.hpp>
+#include <rtlab/render/texture_level.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>
-#include <rtlab/textures/cube_map.hpp>
-#include <rtlab/textures/image_texture.hpp>
-#include <rtlab/textures/texture_param.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace rtlab::solar {
@@ -21,273 +20,221 @@ namespace rtlab::solar {
 namespace {
 
 constexpr float kFovDegrees = 50.0f;
-constexpr float kSunEmission = 1.6f;  // the Sun map's linear values reach ~0.6; this makes its disc glow
-constexpr float kRingInner = 1.25f, kRingOuter = 2.3f;  // in Saturn radii (the D ring to beyond the A ring)
 
 float radians(float degrees) { return degrees * kPi / 180.0f; }
 
-// Planet colours for the procedural maps: the two ends of a noise blend and how banded the body is.
-struct ProceduralLook {
-    RGB a, b;
-    float bands;  // 0: rocky (noise only); > 0: bands of latitude (gas giants)
-    float scale;
-};
-
-ProceduralLook look(int body) {
-    static const ProceduralLook kLooks[] = {
-        {{0.62f, 0.25f, 0.03f}, {0.62f, 0.5f, 0.12f}, 0.0f, 6.0f},  // sun
-        {{0.25f, 0.23f, 0.22f}, {0.6f, 0.57f, 0.53f}, 0.0f, 8.0f},  // mercury
-        {{0.7f, 0.55f, 0.3f}, {0.95f, 0.85f, 0.6f}, 3.0f, 3.0f},    // venus
-        {{0.05f, 0.12f, 0.4f}, {0.25f, 0.45f, 0.15f}, 0.0f, 3.0f},  // earth: sea and land
-        {{0.45f, 0.18f, 0.08f}, {0.8f, 0.45f, 0.25f}, 0.0f, 5.0f},  // mars
-        {{0.55f, 0.4f, 0.3f}, {0.95f, 0.88f, 0.78f}, 14.0f, 4.0f},  // jupiter
-        {{0.7f, 0.6f, 0.4f}, {0.95f, 0.88f, 0.65f}, 10.0f, 3.0f},   // saturn
-        {{0.55f, 0.8f, 0.85f}, {0.7f, 0.9f, 0.92f}, 4.0f, 2.0f},    // uranus
-        {{0.15f, 0.25f, 0.75f}, {0.35f, 0.5f, 0.95f}, 6.0f, 3.0f},  // neptune
-    };
-    return kLooks[body];
-}
-
-// An equirectangular map of a noise blend on the unit sphere (so it has no seam), banded for gas giants.
-Image procedural_map(int body, const TextureRegistry& textures) {
-    const ProceduralLook l = look(body);
-    Params p;
-    p.set("pattern", std::string("fbm")).set("scale", static_cast<double>(l.scale)).set("seed", body + 1.0);
-    const auto noise = textures.create("perlin", std::move(p));
-    const int w = 512, h = 256;
-    Image map(w, h);
-    for (int y = 0; y < h; ++y) {
-        const float lat = kPi * (0.5f - (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
-        for (int x = 0; x < w; ++x) {
-            const float lon = 2.0f * kPi * (static_cast<float>(x) + 0.5f) / static_cast<float>(w);
-            TextureLookup q;
-            q.point = {std::cos(lat) * std::cos(lon), std::sin(lat), -std::cos(lat) * std::sin(lon)};
-            float t = scalar(noise->eval(q));
-            if (l.bands > 0.0f) t = 0.5f + 0.35f * std::sin(l.bands * lat + 3.0f * (t - 0.5f)) + 0.3f * (t - 0.5f);
-            t = std::clamp(t, 0.0f, 1.0f);
-            map.at(x, y) = l.a * (1.0f - t) + l.b * t;
-        }
-    }
-    return map;
-}
-
-// A ring strip like saturn_ring.png: radial colour, alpha 0 at the inner edge, a gap, fading at the rim.
-Image procedural_ring() {
-    const int w = 512;
-    Image ring(w, 4);
-    ring.add_alpha();
-    for (int x = 0; x < w; ++x) {
-        const float r = (static_cast<float>(x) + 0.5f) / static_cast<float>(w);
-        float a = r < 0.05f ? 0.0f : (r < 0.3f ? 0.3f : 0.9f);
-        if (std::abs(r - 0.68f) < 0.03f) a = 0.1f;  // a Cassini division
-        if (r > 0.9f) a *= std::max(0.0f, (1.0f - r) / 0.1f);
-        for (int y = 0; y < 4; ++y) {
-            ring.at(x, y) = RGB(0.75f, 0.68f, 0.55f) * (0.8f + 0.2f * std::sin(60.0f * r));
-            ring.alpha_at(x, y) = a;
-        }
-    }
-    return ring;
-}
-
-// Six faces of a random star field: one texel in 400 a star of random brightness, the rest black.
-std::array<Image, 6> procedural_sky() {
-    std::array<Image, 6> faces;
-    const int n = 512;
-    for (std::uint32_t f = 0; f < 6; ++f) {
-        faces[f] = Image(n, n);
-        for (int y = 0; y < n; ++y) {
-            for (int x = 0; x < n; ++x) {
-                const SampleKey key{7, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), f, 0};
-                if (sample_uniform(key, 0) < 1.0f / 400.0f) {
-                    const float b = 0.3f + 2.0f * sample_uniform(key, 1) * sample_uniform(key, 1);
-                    faces[f].at(x, y) = RGB(b, b, b * (0.85f + 0.3f * sample_uniform(key, 2)));
-                }
-            }
-        }
-    }
-    return faces;
-}
-
-Vec3 orbit_position(const Body& b, float t) {
-    // Kepler's third law for the angular speed, scaled so that Mercury makes a quarter turn per sequence.
-    const float speed = b.orbit > 0.0f ? 0.25f * std::pow(bodies()[1].orbit / b.orbit, 1.5f) : 0.0f;
-    const float angle = radians(b.phase_degrees) + 2.0f * kPi * speed * t;
-    return {b.orbit * std::cos(angle), 0.0f, -b.orbit * std::sin(angle)};
+LevelOfDetail& levels_of(const std::shared_ptr<Texture>& texture) {
+    auto* levels = dynamic_cast<LevelOfDetail*>(texture.get());
+    if (!levels) throw Error("solar system: a texture without levels of detail");
+    return *levels;
 }
 
 }  // namespace
 
 const std::vector<Body>& bodies() {
     static const std::vector<Body> kBodies = {
-        {"sun", "sun.jpg", 3.0f, 0.0f, 0.0f, 7.0f, 0.05f},
-        {"mercury", "mercury.jpg", 0.35f, 5.2f, 160.0f, 0.0f, 0.2f},
-        {"venus", "venus.jpg", 0.6f, 7.0f, 30.0f, 3.0f, 0.1f},
-        {"earth", "earth.jpg", 0.65f, 9.2f, 200.0f, 23.4f, 1.0f},
-        {"mars", "mars.jpg", 0.45f, 11.5f, 340.0f, 25.2f, 1.0f},
-        {"jupiter", "jupiter.jpg", 1.7f, 15.5f, 125.0f, 3.1f, 2.0f},
-        {"saturn", "saturn.jpg", 1.4f, 21.0f, 40.0f, 26.7f, 2.0f},
-        {"uranus", "uranus.jpg", 0.95f, 26.0f, 100.0f, 97.8f, 1.5f},
-        {"neptune", "neptune.jpg", 0.9f, 30.0f, 70.0f, 28.3f, 1.5f},
+        {"sun", "sun.jpg", 3.0f, 0.0f, 0.0f, 7.0f, 0.05f, {{0.62, 0.25, 0.03}, {0.62, 0.5, 0.12}, 6.0}},
+        {"mercury", "mercury.jpg", 0.35f, 5.2f, 160.0f, 0.0f, 0.2f, {{0.25, 0.23, 0.22}, {0.6, 0.57, 0.53}, 8.0}},
+        {"venus", "venus.jpg", 0.6f, 7.0f, 30.0f, 3.0f, 0.1f, {{0.7, 0.55, 0.3}, {0.95, 0.85, 0.6}, 3.0}},
+        {"earth", "earth.jpg", 0.65f, 9.2f, 200.0f, 23.4f, 1.0f, {{0.05, 0.12, 0.4}, {0.25, 0.45, 0.15}, 3.0}},
+        {"mars", "mars.jpg", 0.45f, 11.5f, 340.0f, 25.2f, 1.0f, {{0.45, 0.18, 0.08}, {0.8, 0.45, 0.25}, 5.0}},
+        {"jupiter", "jupiter.jpg", 1.7f, 15.5f, 125.0f, 3.1f, 2.0f, {{0.55, 0.4, 0.3}, {0.95, 0.88, 0.78}, 4.0}},
+        {"saturn", "saturn.jpg", 1.4f, 21.0f, 40.0f, 26.7f, 2.0f, {{0.7, 0.6, 0.4}, {0.95, 0.88, 0.65}, 3.0}},
+        {"uranus", "uranus.jpg", 0.95f, 26.0f, 100.0f, 97.8f, 1.5f, {{0.55, 0.8, 0.85}, {0.7, 0.9, 0.92}, 2.0}},
+        {"neptune", "neptune.jpg", 0.9f, 30.0f, 70.0f, 28.3f, 1.5f, {{0.15, 0.25, 0.75}, {0.35, 0.5, 0.95}, 3.0}},
     };
     return kBodies;
 }
 
-SolarAssets load_solar_assets(const SearchPath& data, bool procedural) {
-    SolarAssets assets;
-    const std::array<const char*, 6> face_names = {"px", "nx", "py", "ny", "pz", "nz"};
-    std::vector<std::filesystem::path> planet_files;
-    std::array<std::filesystem::path, 6> face_files;
-    std::optional<std::filesystem::path> ring_file;
-    bool found = !procedural;
-    if (found) {
-        for (const Body& b : bodies()) {
-            const auto f = data.find(std::filesystem::path("textures") / b.texture);
-            if (!f)
-                found = false;
-            else
-                planet_files.push_back(*f);
-        }
-        for (std::size_t i = 0; i < 6; ++i) {
-            const auto f = data.find(std::filesystem::path("textures/skybox") / (std::string(face_names[i]) + ".jpg"));
-            if (!f)
-                found = false;
-            else
-                face_files[i] = *f;
-        }
-        ring_file = data.find("textures/saturn_ring.png");
-        if (!ring_file) found = false;
-    }
-
-    std::array<Image, 6> faces;
-    Image ring;
-    if (found) {
-        for (const auto& f : planet_files) assets.maps.push_back(std::make_shared<MipMap>(read_image(f)));
-        for (std::size_t i = 0; i < 6; ++i) faces[i] = read_image(face_files[i]);
-        ring = read_image(*ring_file);
-        assets.real_textures = true;
-        assets.note = "textures: images from " + planet_files.front().parent_path().string();
+Params planet_map_params(const TextureRegistry& textures, std::size_t body, const std::string& filename) {
+    Params p;
+    if (filename.empty()) {
+        const ProceduralLook& look = bodies().at(body).look;
+        Params noise;
+        noise.set("pattern", std::string("fbm"))
+            .set("scale", look.scale)
+            .set("seed", static_cast<double>(body + 1))
+            .set("color1", look.color1)
+            .set("color2", look.color2);
+        p.set_object<Texture>("bake", textures.create("perlin", std::move(noise)));
+        p.set("bake_size", Params::List{kFallbackWidth, kFallbackHeight});
     } else {
-        const TextureRegistry textures = make_texture_registry();
-        for (std::size_t i = 0; i < bodies().size(); ++i)
-            assets.maps.push_back(std::make_shared<MipMap>(procedural_map(static_cast<int>(i), textures)));
-        faces = procedural_sky();
-        ring = procedural_ring();
-        assets.note = procedural
-                          ? "textures: procedural (asked for)"
-                          : "textures: procedural (textures/*.jpg, textures/skybox/ and textures/saturn_ring.png "
-                            "not all found in " +
-                                data.describe() + ")";
+        p.set("filename", filename);
     }
+    // u is the longitude and wraps; v is the latitude and stops at the poles.
+    p.set("wrap_v", std::string("clamp")).set("lod", 0.0);
+    if (body == 0) p.set("intensity", static_cast<double>(kSunEmission));
+    return p;
+}
 
-    assets.sky_face_size = faces[0].width();
-    while (true) {
-        std::array<Image, 6> next;
-        const bool last = faces[0].width() <= 16;
-        if (!last)
-            for (std::size_t i = 0; i < 6; ++i) next[i] = downsample(faces[i]);
-        assets.sky.push_back(std::make_shared<CubeMapTexture>(std::move(faces)));
-        if (last) break;
-        faces = std::move(next);
+Params ring_params(const TextureRegistry& textures, const std::string& filename) {
+    Params p;
+    if (filename.empty()) {
+        // Bands across the ring (u runs from its inner to its outer edge); their grey is the opacity.
+        Params bands;
+        bands.set("dimension", 2.0)
+            .set("pattern", std::string("marble"))
+            .set("stripes", 9.0)
+            .set("color1", Params::List{0.3, 0.26, 0.2})
+            .set("color2", Params::List{0.9, 0.82, 0.65});
+        p.set_object<Texture>("bake", textures.create("perlin", std::move(bands)));
+        p.set("bake_size", Params::List{512.0, 8.0});
+    } else {
+        p.set("filename", filename);
     }
-    assets.ring.push_back(std::make_shared<Image>(std::move(ring)));
-    while (assets.ring.back()->width() > 8)
-        assets.ring.push_back(std::make_shared<Image>(downsample(*assets.ring.back())));
+    p.set("wrap", std::string("clamp")).set("lod", 0.0);
+    return p;
+}
+
+Params sky_params(const TextureRegistry& textures, const std::string& folder) {
+    Params p;
+    if (folder.empty()) {
+        Params stars;
+        stars.set("resolution", 512.0).set("density", 0.0025).set("seed", 7.0);
+        p.set_object<Texture>("bake", textures.create("stars", std::move(stars)));
+        p.set("bake_size", 512.0);
+    } else {
+        p.set("folder", folder);
+    }
+    p.set("lod", 0.0);
+    return p;
+}
+
+SolarAssets load_solar_assets(const SearchPath& data, bool procedural) {
+    const TextureRegistry textures = make_texture_registry();
+    SolarAssets assets;
+    std::vector<std::string> missing;
+    std::string found_in;
+    auto find = [&](const std::filesystem::path& name) -> std::string {
+        if (procedural) return {};
+        const auto f = data.find(name);
+        if (!f) {
+            missing.push_back(name.string());
+            return {};
+        }
+        if (found_in.empty()) found_in = f->parent_path().string();
+        return f->string();
+    };
+    for (std::size_t i = 0; i < bodies().size(); ++i) {
+        const std::string file = find(std::filesystem::path("textures") / bodies()[i].texture);
+        assets.maps.push_back(textures.create("image", planet_map_params(textures, i, file)));
+    }
+    assets.ring = textures.create("image", ring_params(textures, find("textures/saturn_ring.png")));
+    std::string folder;
+    bool faces_found = true;
+    for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"}) {
+        const std::string file = find(std::filesystem::path("textures/skybox") / (std::string(face) + ".jpg"));
+        if (file.empty()) faces_found = false;
+        if (faces_found && folder.empty()) folder = std::filesystem::path(file).parent_path().string();
+    }
+    assets.sky = textures.create("cubemap", sky_params(textures, faces_found ? folder : std::string()));
+    assets.real_textures = !procedural && missing.empty();
+    if (procedural) {
+        assets.note = "textures: procedural (asked for)";
+    } else if (missing.empty()) {
+        assets.note = "textures: images from " + found_in;
+    } else if (found_in.empty()) {
+        assets.note =
+            "textures: procedural (textures/*.jpg, textures/skybox/ and textures/saturn_ring.png not found in " +
+            data.describe() + ")";
+    } else {
+        std::string list;
+        for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
+        assets.note = "textures: images from " + found_in + "; procedural for the missing " + list;
+    }
     return assets;
+}
+
+CameraSpec solar_camera(const SolarView& view) {
+    const float t = static_cast<float>(view.frame) / static_cast<float>(view.frames);
+    CameraSpec camera;
+    const float angle = radians(90.0f) + 2.0f * kPi * t;
+    camera.eye = {34.0f * std::cos(angle), 11.0f, 34.0f * std::sin(angle)};
+    camera.look_at = {0.0f, -1.0f, 0.0f};
+    camera.vertical_fov_degrees = kFovDegrees;
+    camera.width = view.width;
+    camera.height = view.height;
+    return camera;
+}
+
+BodyPlacement body_placement(std::size_t i, const SolarView& view) {
+    const float t = static_cast<float>(view.frame) / static_cast<float>(view.frames);
+    const Body& b = bodies().at(i);
+    // Kepler's third law for the angular speed, scaled so that Mercury makes a quarter turn per sequence.
+    const float speed = b.orbit > 0.0f ? 0.25f * std::pow(bodies()[1].orbit / b.orbit, 1.5f) : 0.0f;
+    const float angle = radians(b.phase_degrees) + 2.0f * kPi * speed * t;
+    const Vec3 centre(b.orbit * std::cos(angle), 0.0f, -b.orbit * std::sin(angle));
+    return {centre, Vec3(0.0f, b.phase_degrees + 360.0f * b.turns * t, b.tilt_degrees), b.radius};
 }
 
 RenderJob make_solar_job(const SolarAssets& assets, const SolarView& view, std::vector<BodyOnScreen>* on_screen) {
     if (view.frames < 1 || view.frame < 0 || view.frame >= view.frames)
         throw Error("solar system: frame " + std::to_string(view.frame) + " is not in 0.." +
                     std::to_string(view.frames - 1));
-    if (assets.maps.size() != bodies().size()) throw Error("solar system: assets not loaded");
+    if (assets.maps.size() != bodies().size() || !assets.ring || !assets.sky)
+        throw Error("solar system: assets not loaded");
     const MaterialRegistry materials = make_material_registry();
     const LightRegistry lights = make_light_registry();
-    const float t = static_cast<float>(view.frame) / static_cast<float>(view.frames);
 
-    // The camera makes one turn around the Sun over the sequence, looking slightly down at it.
-    CameraSpec camera;
-    const float cam_angle = radians(90.0f) + 2.0f * kPi * t;
-    camera.eye = {34.0f * std::cos(cam_angle), 11.0f, 34.0f * std::sin(cam_angle)};
-    camera.look_at = {0.0f, -1.0f, 0.0f};
-    camera.vertical_fov_degrees = kFovDegrees;
-    camera.width = view.width;
-    camera.height = view.height;
+    const CameraSpec camera = solar_camera(view);
     const auto pinhole = std::make_shared<PinholeCamera>(camera);
     const float tan_half = std::tan(radians(0.5f * kFovDegrees));
     const float aspect = static_cast<float>(view.width) / static_cast<float>(view.height);
     const float pixels_per_tan = 0.5f * static_cast<float>(view.height) / tan_half;
-    // Averaging n samples in a pixel filters like a footprint sqrt(n) times smaller.
-    const float lod_bias = -0.5f * std::log2(std::max(1.0f, view.samples_per_pixel));
+    // The levels: as a scene file's "lod": "auto" (rtlab/render/texture_level.hpp), or 0 unfiltered.
+    auto level = [&](float lod) { return view.filter_maps ? lod : 0.0f; };
 
     std::vector<SceneObject> objects;
-    Vec3 saturn_centre(0.0f);
-    Mat4 saturn_tilt(1.0f);
-    float saturn_pixels = 0.0f;
     for (std::size_t i = 0; i < bodies().size(); ++i) {
         const Body& b = bodies()[i];
-        const Vec3 centre = orbit_position(b, t);
-        const Vec3 v = centre - camera.eye;
-        const float depth = glm::dot(v, pinhole->forward());
-        const float distance = glm::length(v);
-        const float radius_pixels =
-            distance > b.radius ? b.radius / std::sqrt(distance * distance - b.radius * b.radius) * pixels_per_tan
-                                : static_cast<float>(view.height);
-        const float lod =
-            view.filter_maps ? planet_lod(assets.maps[i]->width(), 2.0f * radius_pixels) + lod_bias : 0.0f;
+        const BodyPlacement place = body_placement(i, view);
+        const Mat4 to_world = scene_transform(place.centre, place.rotate_degrees, Vec3(place.radius));
+        LevelOfDetail& levels = levels_of(assets.maps[i]);
+        levels.set_lod(level(surface_texture_lod(camera, sphere_footprint(to_world, Point3(0.0f), 1.0f),
+                                                 levels.texels_u(), view.samples_per_pixel)));
         if (on_screen) {
+            const Vec3 v = place.centre - camera.eye;
+            const float depth = glm::dot(v, pinhole->forward()), distance = glm::length(v);
+            const float radius_pixels =
+                distance > b.radius ? b.radius / std::sqrt(distance * distance - b.radius * b.radius) * pixels_per_tan
+                                    : static_cast<float>(view.height);
             const float x = glm::dot(v, pinhole->right()) / depth, y = glm::dot(v, pinhole->up()) / depth;
             on_screen->push_back({b.name,
                                   {(x / (tan_half * aspect) + 1.0f) * 0.5f * static_cast<float>(view.width),
                                    (1.0f - y / tan_half) * 0.5f * static_cast<float>(view.height)},
                                   radius_pixels,
-                                  std::max(0.0f, lod),
+                                  levels.lod(),
                                   depth > 0.0f});
         }
-
-        const Mat4 tilt = glm::rotate(Mat4(1.0f), radians(b.tilt_degrees), Vec3(0, 0, 1));
-        const float spin = 2.0f * kPi * b.turns * t + radians(b.phase_degrees);
-        const Mat4 to_world = glm::translate(Mat4(1.0f), centre) * tilt * glm::rotate(Mat4(1.0f), spin, Vec3(0, 1, 0)) *
-                              glm::scale(Mat4(1.0f), Vec3(b.radius));
         const auto shape = std::make_shared<Instance>(std::make_shared<Sphere>(Point3(0.0f), 1.0f), to_world);
-        const auto map = std::make_shared<MipTexture>(assets.maps[i], lod, i == 0 ? kSunEmission : 1.0f);
         Params p;
         SurfaceFlags flags;
         if (i == 0) {
             // The Sun glows and lets its light out: the point light sits inside it, so it casts no shadows.
-            p.set("albedo", 0.0).set_object<const Texture>("emission", map);
+            p.set("albedo", 0.0).set_object<Texture>("emission", assets.maps[i]);
             flags.casts_shadows = false;
         } else {
-            p.set_object<const Texture>("albedo", map);
+            p.set_object<Texture>("albedo", assets.maps[i]);
         }
         objects.push_back({shape, materials.create("lambert", std::move(p)), flags, b.name});
-        if (std::string_view(b.name) == "saturn") {
-            saturn_centre = centre;
-            saturn_tilt = tilt;
-            saturn_pixels = radius_pixels;
-        }
     }
 
     // Saturn's rings: an annulus in its equatorial plane, colour from the strip's RGB and holes from its alpha.
-    // The strip runs radially over (outer - inner) Saturn radii; its level is picked as the planets' are.
     {
-        const float saturn_radius = bodies()[6].radius;
-        const Vec3 normal = Vec3(saturn_tilt * glm::vec4(0, 1, 0, 0));
-        const int strip = assets.ring.front()->width();
-        const float ring_pixels = (kRingOuter - kRingInner) * saturn_pixels;
-        const float lod = view.filter_maps && ring_pixels > 0.0f
-                              ? std::log2(static_cast<float>(strip) / ring_pixels) + lod_bias
-                              : 0.0f;
-        const int level = std::clamp(static_cast<int>(std::lround(lod)), 0, static_cast<int>(assets.ring.size()) - 1);
-        ImageTextureOptions options;
-        options.wrap = WrapMode::clamp;
-        const auto ring = std::make_shared<ImageTexture>(assets.ring[static_cast<std::size_t>(level)], options);
+        const std::size_t saturn = 6;
+        const BodyPlacement place = body_placement(saturn, view);
+        const Vec3 normal = Vec3(glm::rotate(Mat4(1.0f), glm::radians(place.rotate_degrees.z), Vec3(0, 0, 1)) *
+                                 Vec4(0.0f, 1.0f, 0.0f, 0.0f));
+        const float outer = kRingOuter * place.radius, inner = kRingInner * place.radius;
+        LevelOfDetail& levels = levels_of(assets.ring);
+        levels.set_lod(level(surface_texture_lod(camera, disk_footprint(Mat4(1.0f), place.centre, outer, inner),
+                                                 levels.texels_u(), view.samples_per_pixel)));
         Params p;
-        p.set_object<const Texture>("albedo", ring).set_object<const Texture>("opacity", ring);
-        objects.push_back(
-            {std::make_shared<Disk>(saturn_centre, normal, kRingOuter * saturn_radius, kRingInner * saturn_radius),
-             materials.create("lambert", std::move(p)),
-             {},
-             "saturn rings"});
+        p.set_object<Texture>("albedo", assets.ring).set_object<Texture>("opacity", assets.ring);
+        objects.push_back({std::make_shared<Disk>(place.centre, normal, outer, inner),
+                           materials.create("lambert", std::move(p)),
+                           {},
+                           "saturn rings"});
     }
 
     RenderJob job;
@@ -300,16 +247,9 @@ RenderJob make_solar_job(const SolarAssets& assets, const SolarView& view, std::
     job.lights = {lights.create("point", std::move(sunlight)), lights.create("ambient", std::move(ambient))};
     job.whitted.convention = Convention::classic;
     job.whitted.max_depth = 2;
-    // The sky's level: a face texel about one pixel at the centre of the view.
-    int sky_level = 0;
-    if (view.filter_maps) {
-        const float texels_per_pixel =
-            static_cast<float>(assets.sky_face_size) * tan_half / static_cast<float>(view.height);
-        sky_level =
-            std::clamp(static_cast<int>(std::floor(std::log2(std::max(1.0f, texels_per_pixel)) + lod_bias + 0.5f)), 0,
-                       static_cast<int>(assets.sky.size()) - 1);
-    }
-    job.whitted.environment = assets.sky[static_cast<std::size_t>(sky_level)];
+    LevelOfDetail& sky = levels_of(assets.sky);
+    sky.set_lod(level(environment_texture_lod(camera, sky.texels_u(), view.samples_per_pixel)));
+    job.whitted.environment = assets.sky;
     job.settings.pattern = PixelPattern::jittered;
     job.settings.spp = 4;
     return job;

@@ -1,32 +1,27 @@
 #pragma once
 /// \brief The solar-system scene built in code (rtlab-solar-system), so that a test can build the same one.
+///
+/// scenes/solar_system.json is the same scene as a file (frame 0 of a one-frame sequence): its textures are
+/// made by the same registry types with the same parameters (an "image" with "lod": "auto", its procedural
+/// "fallback" baked when the file is missing), and their levels are picked by the same functions
+/// (rtlab/render/texture_level.hpp), so the two render byte-identical images.
 #include <rtlab/core/search_path.hpp>
 #include <rtlab/render/render_job.hpp>
+#include <rtlab/textures/mip_map.hpp>
 #include <rtlab/textures/texture.hpp>
 
-#include "planet_map.hpp"
-
-#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace rtlab::solar {
 
-/// \brief The images of the scene, loaded (or made) once and shared by every frame of a sequence.
-struct SolarAssets {
-    std::vector<std::shared_ptr<const MipMap>> maps;  ///< one per body of bodies(), the Sun first
-    std::vector<std::shared_ptr<const Image>> ring;   ///< Saturn's ring strip (colour and alpha), halved per level
-    std::vector<std::shared_ptr<const Texture>> sky;  ///< the star-field cube map, face size halved per level
-    int sky_face_size = 0;                            ///< of level 0
-    bool real_textures = false;
-    std::string note;  ///< which textures are used and from where, for the app to print
+/// \brief The procedural stand-in for a body's map: fBm noise on the sphere blending two colours,
+/// baked into a kFallbackWidth x kFallbackHeight image (a "perlin" texture as a scene file's "fallback").
+struct ProceduralLook {
+    Params::List color1, color2;
+    double scale;
 };
-
-/// Loads the planet maps, ring and star-field faces of ../shared/textures (textures/earth.jpg,
-/// textures/skybox/px.jpg, ...) from `data`; when any is missing, or with `procedural`, makes procedural
-/// ones instead (noise and bands per body, a random star field) and says so in the note.
-SolarAssets load_solar_assets(const SearchPath& data, bool procedural = false);
 
 /// \brief One body: a sphere of `radius` on a circular orbit of `orbit` around the Sun.
 struct Body {
@@ -34,10 +29,36 @@ struct Body {
     const char* texture;  ///< file name under textures/
     float radius, orbit, phase_degrees, tilt_degrees;
     float turns;  ///< spins about its axis over a whole sequence
+    ProceduralLook look;
 };
 
 /// The Sun and the eight planets (sizes and distances not to scale), in that order.
 const std::vector<Body>& bodies();
+
+constexpr int kFallbackWidth = 512, kFallbackHeight = 256;  ///< of a baked procedural planet map
+constexpr float kSunEmission = 1.6f;  ///< the Sun map's linear values reach ~0.6; this makes its disc glow
+constexpr float kRingInner = 1.25f, kRingOuter = 2.3f;  ///< in Saturn radii (the D ring to beyond the A ring)
+
+/// The parameters of each texture, as a scene file gives them (the file name found on the data path, or
+/// the fallback when it is not): `filename` empty means the fallback.
+Params planet_map_params(const TextureRegistry& textures, std::size_t body, const std::string& filename);
+Params ring_params(const TextureRegistry& textures, const std::string& filename);
+Params sky_params(const TextureRegistry& textures, const std::string& folder);
+
+/// \brief The textures of the scene, made once and shared by every frame of a sequence. Each has levels
+/// (rtlab::LevelOfDetail) that make_solar_job sets for its frame: render a job before making the next.
+struct SolarAssets {
+    std::vector<std::shared_ptr<Texture>> maps;  ///< one per body of bodies(), the Sun first
+    std::shared_ptr<Texture> ring;               ///< Saturn's ring strip (colour and alpha)
+    std::shared_ptr<Texture> sky;                ///< the star-field cube map
+    bool real_textures = false;                  ///< every image was found
+    std::string note;                            ///< which textures are used and from where, for the app to print
+};
+
+/// Loads the planet maps, ring and star-field faces of ../shared/textures (textures/earth.jpg,
+/// textures/skybox/px.jpg, ...) from `data`; each one that is missing, or all with `procedural`, is made
+/// from its procedural fallback instead (noise per body, a random star field), and the note says which.
+SolarAssets load_solar_assets(const SearchPath& data, bool procedural = false);
 
 /// \brief Which picture of the sequence, and how it is filtered.
 struct SolarView {
@@ -45,7 +66,7 @@ struct SolarView {
     int frame = 0;                   ///< 0 .. frames - 1
     int frames = 1;                  ///< the camera makes one turn around the Sun over the sequence
     bool filter_maps = true;         ///< false: planet maps and sky at full resolution (for comparison)
-    float samples_per_pixel = 1.0f;  ///< more samples average more texels: the level drops by log4 of it
+    float samples_per_pixel = 4.0f;  ///< filtering_samples() of the settings the job is rendered with
 };
 
 /// \brief Where a body lands in the image (for tests and the shimmer measurement).
@@ -57,11 +78,23 @@ struct BodyOnScreen {
     bool in_front;  ///< in front of the camera
 };
 
+/// The camera of a frame: one turn around the Sun over the sequence, looking slightly down at it.
+CameraSpec solar_camera(const SolarView& view);
+
+/// Where body `i` is at a frame: its sphere's transform (rtlab::scene_transform of its centre, spin and
+/// tilt, and radius), the same numbers a scene file gives as "translate", "rotate" and "scale".
+struct BodyPlacement {
+    Vec3 centre;
+    Vec3 rotate_degrees;
+    float radius;
+};
+BodyPlacement body_placement(std::size_t i, const SolarView& view);
+
 /// The job for one frame: an emissive Sun with a point light inside it that it does not shadow, the planets
-/// textured through MipTextures at the level their size on screen asks for, Saturn's rings as an annulus
-/// whose ring-image alpha is its opacity, and the star field as the environment. Physical units are not
-/// used: the classic convention (no fall-off with distance). Jittered 4 samples per pixel by default.
-/// `on_screen`, when given, receives every body's place in the image.
+/// textured at the level their size on screen asks for, Saturn's rings as an annulus whose ring-image alpha
+/// is its opacity, and the star field as the environment. Physical units are not used: the classic
+/// convention (no fall-off with distance). Jittered 4 samples per pixel by default. Sets the levels of the
+/// assets' textures. `on_screen`, when given, receives every body's place in the image.
 RenderJob make_solar_job(const SolarAssets& assets, const SolarView& view,
                          std::vector<BodyOnScreen>* on_screen = nullptr);
 

@@ -14,6 +14,7 @@
 #include <filesystem>
 
 #include "../../apps/bunny/scene.hpp"
+#include "../../apps/solar_system/scene.hpp"
 #include "../../apps/whitted/scene.hpp"
 
 using namespace rtlab;
@@ -95,4 +96,72 @@ TEST_CASE("scene files: scenes/bunny.json renders byte-identical to rtlab-bunny"
     const Image a = render_job(app).image, b = render_job(file.job).image;
     require_a_picture(a);
     CHECK(differing_pixels(a, b) == 0);
+}
+
+namespace {
+
+// rtlab-solar-system's frame 0 against scenes/solar_system.json, its textures from `data` (the app) and
+// `texture_dirs` (the file); returns the app's image.
+Image require_solar_match(const SearchPath& data, std::vector<fs::path> texture_dirs, bool expect_images) {
+    const solar::SolarAssets assets = solar::load_solar_assets(data);
+    CHECK(assets.real_textures == expect_images);
+    RenderJob app = solar::make_solar_job(assets, solar::SolarView{kWidth, kHeight, 0, 1, true, 4.0f});
+    const Image a = render_job(app).image;  // before anything else sets the shared textures' levels
+    LoadedScene file = load_course_scene("solar_system", std::move(texture_dirs));
+    // Every image found, or every one replaced by its fallback (and said so).
+    CHECK(file.warnings.size() == (expect_images ? 0u : 11u));
+    require_same_settings(app, file.job);
+    const Image b = render_job(file.job).image;
+    require_a_picture(a);
+    CHECK(differing_pixels(a, b) == 0);
+    return a;
+}
+
+}  // namespace
+
+TEST_CASE("scene files: scenes/solar_system.json renders byte-identical to rtlab-solar-system, procedural", "[apps]") {
+    // Nothing on the data path: both bake the same procedural fallbacks and pick the same levels.
+    const Image a = require_solar_match(SearchPath{}, {}, false);
+    // Not one flat colour: the Sun's glow is the brightest part, and much brighter than the sky.
+    float brightest = 0.0f;
+    for (std::size_t i = 0; i < a.pixel_count(); ++i) brightest = std::max(brightest, a.pixels()[i].r);
+    CHECK(brightest > 0.8f);
+}
+
+TEST_CASE("scene files: scenes/solar_system.json renders byte-identical to rtlab-solar-system, shared images",
+          "[apps]") {
+    const auto shared = test::shared_dir();
+    if (!shared || !fs::exists(*shared / "textures" / "earth.jpg")) {
+        WARN("skipped: the planet images (textures/*.jpg) need ../shared; set RTLAB_SHARED_DIR");
+        return;
+    }
+    require_solar_match(SearchPath({*shared}), {*shared / "textures"}, true);
+}
+
+TEST_CASE("scene files: the solar system's auto levels follow the picture size in the app and the file alike",
+          "[apps]") {
+    // At 4 times the size every level is 2 finer (until 0); the file's levels match the app's at both sizes.
+    const solar::SolarAssets assets = solar::load_solar_assets(SearchPath{});
+    std::vector<solar::BodyOnScreen> small, large;
+    solar::make_solar_job(assets, solar::SolarView{kWidth, kHeight, 0, 1, true, 4.0f}, &small);
+    solar::make_solar_job(assets, solar::SolarView{4 * kWidth, 4 * kHeight, 0, 1, true, 4.0f}, &large);
+    REQUIRE(small.size() == large.size());
+    int compared = 0;
+    for (std::size_t i = 0; i < small.size(); ++i) {
+        if (large[i].lod > 0.0f) {
+            CHECK(small[i].lod == Approx(large[i].lod + 2.0f).margin(1e-4));
+            ++compared;
+        }
+    }
+    CHECK(compared >= 3);
+    // Jupiter's baked 512-texel map, 1.7 units across at about 43 units from the camera, at 64 x 48 and 4
+    // samples: log2(512 / (pi * 2 * 1.7 / sqrt(d^2 - r^2) * 24 / tan 25 deg)) - 1.
+    const auto& jupiter = small[5];
+    CHECK(std::string(jupiter.name) == "jupiter");
+    const Vec3 eye = solar::solar_camera(solar::SolarView{kWidth, kHeight, 0, 1, true, 4.0f}).eye;
+    const float d = glm::length(solar::body_placement(5, {}).centre - eye), r = 1.7f;
+    const float expected =
+        std::log2(512.0f / (kPi * 2.0f * r / std::sqrt(d * d - r * r) * 24.0f / std::tan(25.0f * kPi / 180.0f))) - 1.0f;
+    CHECK(jupiter.lod == Approx(expected).margin(1e-3));
+    CHECK(jupiter.lod > 2.0f);
 }

@@ -76,30 +76,20 @@ TEST_CASE("solar system: the Sun is bright and the planets lit, the shared textu
     check_sun_and_planets(assets);
 }
 
-TEST_CASE("planet maps: levels average their texels, lod follows the pixel footprint", "[apps]") {
-    Image img(4, 2);
-    for (int x = 0; x < 4; ++x) {
-        img.at(x, 0) = RGB(static_cast<float>(x));
-        img.at(x, 1) = RGB(static_cast<float>(x + 4));
-    }
-    const Image half = downsample(img);
-    REQUIRE(half.width() == 2);
-    REQUIRE(half.height() == 1);
-    CHECK(half.at(0, 0).r == 2.5f);  // (0 + 1 + 4 + 5) / 4
-    CHECK(half.at(1, 0).r == 4.5f);
-    // A map 2048 texels around on a planet 2048 / pi pixels wide is sampled one texel per pixel: level 0.
-    CHECK(planet_lod(2048, 2048.0f / kPi) == Approx(0.0f).margin(1e-5));
-    CHECK(planet_lod(2048, 2048.0f / (8.0f * kPi)) == Approx(3.0f));
-    CHECK(planet_lod(2048, 4000.0f) == 0.0f);  // never sharper than the map
-    // The longitude seam wraps: just either side of u = 0 the lookup blends the first and last columns.
-    Image stripes(8, 4);
-    for (int y = 0; y < 4; ++y) stripes.at(0, y) = RGB(1.0f);
-    const MipTexture t(std::make_shared<MipMap>(stripes), 0.0f);
-    TextureLookup a, b;
+TEST_CASE("planet maps: the longitude seam wraps and the poles clamp", "[apps]") {
+    // The maps are made as rtlab-solar-system makes them (planet_map_params): u repeats, v stops at the poles.
+    const TextureRegistry textures = make_texture_registry();
+    const SolarAssets assets = load_solar_assets(SearchPath{}, true);
+    const auto& earth = assets.maps[3];
+    TextureLookup a, b, pole, below_pole;
     a.uv = {0.0f, 0.5f};
     b.uv = {1.0f, 0.5f};
-    CHECK(t.eval(a).r == Approx(0.5f));  // the edge of columns 7 and 0
-    CHECK(t.eval(b).r == Approx(0.5f));
+    CHECK(earth->eval(a).r == earth->eval(b).r);  // the same blend of the first and last columns
+    pole.uv = {0.3f, 1.0f};
+    below_pole.uv = {0.3f, 1.0f - 0.5f / static_cast<float>(kFallbackHeight)};  // the top row's centre
+    CHECK(earth->eval(pole).g == earth->eval(below_pole).g);                    // clamped: no bottom row mixed in
+    const Params p = planet_map_params(textures, 3, "");
+    CHECK(p.get_string("wrap_v") == "clamp");
 }
 
 TEST_CASE("solar system: filtered maps stop a small planet shimmering", "[apps]") {

@@ -27,15 +27,10 @@ std::shared_ptr<rtlab::Texture> make_stripes(const rtlab::Params& p) {
                                      rtlab::positive_float(p, "width", 0.25f));
 }
 
+void register_types(rtlab::PluginRegistries& r) {
+    r.textures.add("stripes", make_stripes, "bands of colours a and b, width high, along object-space y");
+}
+
 }  // namespace
 
-RTLAB_PLUGIN_EXPORT const RtlabPluginRecord* rtlab_plugin_query(void) {
-    static const RtlabPluginRecord record = rtlab::make_plugin_record("stripes: two-colour bands");
-    return &record;
-}
-
-RTLAB_PLUGIN_EXPORT int rtlab_plugin_register(const RtlabPluginRegistries* registries, char* error, size_t error_size) {
-    return rtlab::plugin_register(registries, error, error_size, [](rtlab::PluginRegistries& r) {
-        r.textures.add("stripes", make_stripes, "bands of colours a and b, width high, along object-space y");
-    });
-}
+RTLAB_DEFINE_PLUGIN("stripes: two-colour bands", register_types)

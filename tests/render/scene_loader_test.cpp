@@ -1,8 +1,10 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/render/scene_loader.hpp>
+#include <rtlab/textures/mip_map.hpp>
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <string>
 
 using namespace rtlab;
@@ -130,4 +132,66 @@ TEST_CASE("plugins are names given to the loader before types are looked up", "[
         CHECK_THAT(load_error(bad, o), Catch::Contains("is not a plugin name"));
     }
     CHECK(loaded.size() == 1);  // a path never reaches the loader
+}
+
+namespace {
+
+// A scene whose texture "d" (an image baked from its fallback, 1024 texels around) has "lod": "auto", is the
+// sky, and is seen on spheres through `material`; returns the level the loader set.
+float auto_level(const std::string& textures, const std::string& material, const std::string& shapes) {
+    const std::string text = R"({"version": 1,
+      "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "fov": 40},
+      "render": {"width": 40, "height": 30, "aa": "none", "skybox": "d"},
+      "textures": [{"name": "d", "type": "image", "filename": "missing.png", "lod": "auto",
+                    "fallback": {"type": "solid", "color": 0.5}, "fallback_size": [1024, 512]})" +
+                             textures + R"(],
+      "materials": [{"name": "m", "type": "lambert", "albedo": )" +
+                             material + R"(}],
+      "shapes": [)" + shapes +
+                             "]}";
+    const LoadedScene scene = parse_scene(text, "t.json");
+    CHECK(scene.warnings.size() == 1);  // missing.png, replaced by its fallback
+    const auto* levels = dynamic_cast<const LevelOfDetail*>(scene.job.whitted.environment.get());
+    REQUIRE(levels != nullptr);
+    return levels->lod();
+}
+
+// log2 of the texels per pixel of a 1024-texel map round a unit sphere at distance d (40 degrees, 30 pixels).
+double sphere_level(double d) {
+    const double pixels_per_unit = 15.0 / std::tan(20.0 * 3.14159265358979 / 180.0) / std::sqrt(d * d - 1.0);
+    return std::log2(1024.0 / (2.0 * 3.14159265358979 * pixels_per_unit));
+}
+
+}  // namespace
+
+TEST_CASE("scene loader: lod auto takes the finest level any sphere or the sky using the texture asks for", "[scene]") {
+    const double sky = std::log2(1024.0 * std::tan(20.0 * 3.14159265358979 / 180.0) / 30.0);  // 3.635
+    const std::string near = R"({"type": "sphere", "center": [0, 0, -2.5], "material": "m"})";
+    const std::string far = R"({"type": "sphere", "material": "m", "transform": {"translate": [0, 0, -50]}})";
+    // Only the sky: its level.
+    CHECK(auto_level("", "0.5", far) == Approx(sky).margin(1e-4));
+    // A near sphere needs a finer level than the sky (3.18 < 3.64); a far one a coarser.
+    REQUIRE(sphere_level(2.5) < sky);
+    REQUIRE(sphere_level(50.0) > sky);
+    CHECK(auto_level("", "\"d\"", far + ", " + near) == Approx(sphere_level(2.5)).margin(1e-4));
+    CHECK(auto_level("", "\"d\"", far) == Approx(sky).margin(1e-4));
+    // Through a texture that uses it: a noise whose first colour is the image.
+    CHECK(auto_level(R"(, {"name": "n", "type": "perlin", "color1": "d"})", "\"n\"", near) ==
+          Approx(sphere_level(2.5)).margin(1e-4));
+}
+
+TEST_CASE("scene loader: a fallback stands in only for files that are missing", "[scene]") {
+    const char* const text = R"({"version": 1,
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "render": {"width": 8, "height": 6},
+      "textures": [{"name": "d", "type": "image", "filename": "%s",
+                    "fallback": {"type": "solid", "color": [0.25, 0.5, 1]}, "fallback_size": [4, 2]}],
+      "materials": [{"name": "m", "type": "lambert", "albedo": "d"}],
+      "shapes": [{"type": "sphere", "material": "m"}]})";
+    std::string missing(text);
+    missing.replace(missing.find("%s"), 2, "nowhere.png");
+    const LoadedScene scene = parse_scene(missing, "t.json");
+    REQUIRE(scene.warnings.size() == 1);
+    CHECK_THAT(scene.warnings[0],
+               Catch::Contains("/textures/0: file 'nowhere.png' not found") && Catch::Contains("using its fallback"));
 }

@@ -41,8 +41,8 @@ TextureLookup at_uv(float u, float v) {
 
 TEST_CASE("every built-in texture is registered with a documented parameter list", "[registry]") {
     const TextureRegistry r = make_texture_registry();
-    const std::vector<std::string> expected{"checker",    "checker3d", "cubemap", "image",
-                                            "mandelbrot", "perlin",    "simplex", "solid"};
+    const std::vector<std::string> expected{"checker", "checker3d", "cubemap", "image", "mandelbrot",
+                                            "perlin",  "simplex",   "solid",   "stars"};
     CHECK(r.names() == expected);
     CHECK(r.category() == "texture");
     // Each doc names the parameters with their defaults.

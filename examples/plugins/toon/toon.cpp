@@ -78,19 +78,14 @@ std::shared_ptr<Material> make_toon(const Params& p) {
     return std::make_shared<ToonMaterial>(std::move(w), std::move(color), std::move(highlight), levels, size, outline);
 }
 
+void register_types(rtlab::PluginRegistries& r) {
+    r.materials.add("toon", make_toon,
+                    "cel shading: n.l cut into flat bands. color: colour or texture (default 0.8); levels 1..16 "
+                    "(default 3); highlight colour (default 0) where the mirror direction is within "
+                    "highlight_size (cosine, default 0.97) of the viewer; outline: n.v below which it is black "
+                    "(default 0); kr, emission.");
+}
+
 }  // namespace
 
-RTLAB_PLUGIN_EXPORT const RtlabPluginRecord* rtlab_plugin_query(void) {
-    static const RtlabPluginRecord record = rtlab::make_plugin_record("toon: a cel-shading material");
-    return &record;
-}
-
-RTLAB_PLUGIN_EXPORT int rtlab_plugin_register(const RtlabPluginRegistries* registries, char* error, size_t error_size) {
-    return rtlab::plugin_register(registries, error, error_size, [](rtlab::PluginRegistries& r) {
-        r.materials.add("toon", make_toon,
-                        "cel shading: n.l cut into flat bands. color: colour or texture (default 0.8); levels 1..16 "
-                        "(default 3); highlight colour (default 0) where the mirror direction is within "
-                        "highlight_size (cosine, default 0.97) of the viewer; outline: n.v below which it is black "
-                        "(default 0); kr, emission.");
-    });
-}
+RTLAB_DEFINE_PLUGIN("toon: a cel-shading material", register_types)

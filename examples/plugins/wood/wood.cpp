@@ -72,18 +72,13 @@ std::shared_ptr<Texture> make_wood(const Params& p) {
     return std::make_shared<WoodTexture>(light, dark, rings, turbulence, noise_scale, axis[0] - 'x', seed);
 }
 
+void register_types(rtlab::PluginRegistries& r) {
+    r.textures.add("wood", make_wood,
+                   "solid wood: growth rings around an axis through the object's origin. light, dark: colours; "
+                   "rings per unit (default 6); turbulence in ring widths (default 0.3); noise_scale (default "
+                   "1.5); axis x|y|z (default y); seed.");
+}
+
 }  // namespace
 
-RTLAB_PLUGIN_EXPORT const RtlabPluginRecord* rtlab_plugin_query(void) {
-    static const RtlabPluginRecord record = rtlab::make_plugin_record("wood: a procedural wood texture");
-    return &record;
-}
-
-RTLAB_PLUGIN_EXPORT int rtlab_plugin_register(const RtlabPluginRegistries* registries, char* error, size_t error_size) {
-    return rtlab::plugin_register(registries, error, error_size, [](rtlab::PluginRegistries& r) {
-        r.textures.add("wood", make_wood,
-                       "solid wood: growth rings around an axis through the object's origin. light, dark: colours; "
-                       "rings per unit (default 6); turbulence in ring widths (default 0.3); noise_scale (default "
-                       "1.5); axis x|y|z (default y); seed.");
-    });
-}
+RTLAB_DEFINE_PLUGIN("wood: a procedural wood texture", register_types)

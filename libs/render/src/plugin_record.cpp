@@ -44,47 +44,59 @@ std::string glm_bits(std::uint32_t bits) {
     return out.empty() ? "defaults" : out;
 }
 
+// One checked field: its name in messages and how each record shows it. Two records differ in the field
+// when the shown texts differ, so the text is also what the message prints.
+struct Field {
+    const char* name;
+    std::string (*show)(const RtlabPluginRecord&);
+};
+
+template <auto Member>
+std::string show_number(const RtlabPluginRecord& r) {
+    return std::to_string(r.*Member);
+}
+
+// The fields after abi_version and record_size, in the order a user reads them.
+constexpr Field kFields[] = {
+    {"rtlab version",
+     [](const RtlabPluginRecord& r) {
+         return version(r.rtlab_version_major, r.rtlab_version_minor, r.rtlab_version_patch);
+     }},
+    {"public headers hash", [](const RtlabPluginRecord& r) { return text(r.headers_hash); }},
+    {"_GLIBCXX_USE_CXX11_ABI", show_number<&RtlabPluginRecord::glibcxx_use_cxx11_abi>},
+    {"_GLIBCXX_RELEASE", show_number<&RtlabPluginRecord::glibcxx_release>},
+    {"_GLIBCXX_DEBUG", show_number<&RtlabPluginRecord::glibcxx_debug>},
+    {"GLM_VERSION", show_number<&RtlabPluginRecord::glm_version>},
+    {"GLM configuration", [](const RtlabPluginRecord& r) { return glm_bits(r.glm_config); }},
+    {"sizeof(Vec3)", show_number<&RtlabPluginRecord::size_vec3>},
+    {"alignof(Vec3)", show_number<&RtlabPluginRecord::align_vec3>},
+    {"sizeof(Vec4)", show_number<&RtlabPluginRecord::size_vec4>},
+    {"alignof(Vec4)", show_number<&RtlabPluginRecord::align_vec4>},
+    {"sizeof(Mat4)", show_number<&RtlabPluginRecord::size_mat4>},
+    {"sizeof(std::string)", show_number<&RtlabPluginRecord::size_std_string>},
+    {"sizeof(std::function)", show_number<&RtlabPluginRecord::size_std_function>},
+    {"sizeof(std::shared_ptr)", show_number<&RtlabPluginRecord::size_shared_ptr>},
+    {"sizeof(Params)", show_number<&RtlabPluginRecord::size_params>},
+    {"sizeof(Registry)", show_number<&RtlabPluginRecord::size_registry>},
+    {"sizeof(TextureLookup)", show_number<&RtlabPluginRecord::size_texture_lookup>},
+    {"sizeof(SurfaceTerms)", show_number<&RtlabPluginRecord::size_surface_terms>},
+};
+
 }  // namespace
 
 std::vector<std::string> plugin_record_differences(const RtlabPluginRecord& expected, const RtlabPluginRecord& got) {
     std::vector<std::string> out;
-    auto differ = [&](const char* field, const std::string& want, const std::string& have) {
-        out.push_back(std::string(field) + ": expected " + want + ", got " + have);
-    };
-    auto number = [&](const char* field, auto want, auto have) {
-        if (want != have) differ(field, std::to_string(want), std::to_string(have));
+    auto compare = [&](const char* name, const std::string& want, const std::string& have) {
+        if (want != have) out.push_back(std::string(name) + ": expected " + want + ", got " + have);
     };
     // A record of another layout: nothing after these two fields means what the host thinks it means.
-    number("plugin ABI version", expected.abi_version, got.abi_version);
+    compare("plugin ABI version", std::to_string(expected.abi_version), std::to_string(got.abi_version));
     if (!out.empty()) return out;
-    number("record size", expected.record_size, got.record_size);
+    compare("record size", std::to_string(expected.record_size), std::to_string(got.record_size));
     if (!out.empty()) return out;
-
-    const std::string want_version =
-        version(expected.rtlab_version_major, expected.rtlab_version_minor, expected.rtlab_version_patch);
-    const std::string have_version = version(got.rtlab_version_major, got.rtlab_version_minor, got.rtlab_version_patch);
-    if (want_version != have_version) differ("rtlab version", want_version, have_version);
-    const bool same_hash =
-        expected.headers_hash && got.headers_hash && std::strcmp(expected.headers_hash, got.headers_hash) == 0;
-    if (!same_hash) differ("public headers hash", text(expected.headers_hash), text(got.headers_hash));
-    number("_GLIBCXX_USE_CXX11_ABI", expected.glibcxx_use_cxx11_abi, got.glibcxx_use_cxx11_abi);
-    number("_GLIBCXX_RELEASE", expected.glibcxx_release, got.glibcxx_release);
-    number("_GLIBCXX_DEBUG", expected.glibcxx_debug, got.glibcxx_debug);
-    number("GLM_VERSION", expected.glm_version, got.glm_version);
-    if (expected.glm_config != got.glm_config)
-        differ("GLM configuration", glm_bits(expected.glm_config), glm_bits(got.glm_config));
-    number("sizeof(Vec3)", expected.size_vec3, got.size_vec3);
-    number("alignof(Vec3)", expected.align_vec3, got.align_vec3);
-    number("sizeof(Vec4)", expected.size_vec4, got.size_vec4);
-    number("alignof(Vec4)", expected.align_vec4, got.align_vec4);
-    number("sizeof(Mat4)", expected.size_mat4, got.size_mat4);
-    number("sizeof(std::string)", expected.size_std_string, got.size_std_string);
-    number("sizeof(std::function)", expected.size_std_function, got.size_std_function);
-    number("sizeof(std::shared_ptr)", expected.size_shared_ptr, got.size_shared_ptr);
-    number("sizeof(Params)", expected.size_params, got.size_params);
-    number("sizeof(Registry)", expected.size_registry, got.size_registry);
-    number("sizeof(TextureLookup)", expected.size_texture_lookup, got.size_texture_lookup);
-    number("sizeof(SurfaceTerms)", expected.size_surface_terms, got.size_surface_terms);
+    // A missing hash never matches, not even another missing one (the table compares "(none)" equal).
+    if (!expected.headers_hash && !got.headers_hash) out.push_back("public headers hash: expected (none), got (none)");
+    for (const Field& f : kFields) compare(f.name, f.show(expected), f.show(got));
     return out;
 }
 

@@ -38,6 +38,7 @@ public:
     std::string message() const;
     // "LINE:COLUMN" of the value at pointer, or "" when unknown.
     std::string position(const std::string& pointer) const;
+    const std::string& file() const { return m_file; }
     // "LINE:COLUMN" of a byte offset.
     std::string location(std::size_t offset) const;
 

@@ -6,7 +6,9 @@
 #include <rtlab/geometry/instance.hpp>
 #include <rtlab/render/image_output.hpp>
 #include <rtlab/render/scene_loader.hpp>
+#include <rtlab/render/texture_level.hpp>
 #include <rtlab/render/thin_lens_camera.hpp>
+#include <rtlab/textures/mip_map.hpp>
 
 #include "scene_json.hpp"
 
@@ -40,11 +42,14 @@ void check_image_size(std::int64_t width, std::int64_t height, std::string_view 
 namespace {
 
 // Keys whose string values are words or file names for the built-in types, never texture names.
-const std::set<std::string, std::less<>> kTextureWords = {"pattern",  "wrap",  "filter", "encoding", "extension",
-                                                          "filename", "cross", "folder", "px",       "nx",
-                                                          "py",       "ny",    "pz",     "nz"};
+const std::set<std::string, std::less<>> kTextureWords = {"pattern",   "wrap",     "wrap_v", "filter", "encoding",
+                                                          "extension", "filename", "cross",  "folder", "px",
+                                                          "nx",        "py",       "ny",     "pz",     "nz"};
 const std::set<std::string, std::less<>> kMaterialWords = {"metal", "distribution"};
 const std::set<std::string, std::less<>> kCubeFaces = {"px", "nx", "py", "ny", "pz", "nz", "cross"};
+// The keys that name a texture's files: dropped when the files are missing and its fallback is baked instead.
+const std::set<std::string, std::less<>> kFileKeys = {"filename", "folder", "extension", "cross", "px",
+                                                      "nx",       "py",     "ny",        "pz",    "nz"};
 
 std::string join(const std::vector<std::string>& words) {
     std::string out;
@@ -287,6 +292,7 @@ private:
                 if (kind != Kind::texture && kind != Kind::material) break;
                 auto texture = make_texture(v, p, false);  // an inline texture
                 if (!texture) return false;
+                note_use(texture.get());
                 params.set_object<Texture>(key, std::move(texture));
                 return true;
             }
@@ -312,6 +318,7 @@ private:
                 if ((kind == Kind::texture || kind == Kind::material) && !word) {
                     if (auto it = m_textures.find(s); it != m_textures.end()) {
                         if (!it->second.object) return false;  // its own error is already reported
+                        note_use(it->second.object.get());
                         params.set_object<Texture>(key, it->second.object);
                         return true;
                     }
@@ -394,7 +401,7 @@ private:
 
     template <class Base>
     std::shared_ptr<Base> create(const Registry<Base>& registry, Kind kind, const Json& obj, const std::string& p,
-                                 std::initializer_list<std::string_view> loader_keys, const Params& extra = {}) {
+                                 const std::vector<std::string_view>& loader_keys, const Params& extra = {}) {
         const auto type = type_of(registry, kind, obj, p);
         if (!type) return nullptr;
         Params params = extra;
@@ -441,9 +448,181 @@ private:
 
     std::shared_ptr<Texture> make_texture(const Json& v, const std::string& p, bool named) {
         if (!expect_object(v, p, "a texture")) return nullptr;
-        return create(
-            m_reg.textures, Kind::texture, v, p,
-            named ? std::initializer_list<std::string_view>{"name"} : std::initializer_list<std::string_view>{});
+        std::vector<std::string_view> loader_keys;
+        if (named) loader_keys.push_back("name");
+        Params extra;
+        bool auto_lod = false;
+        if (v.contains("lod") && v["lod"].is_string()) {
+            if (v["lod"] != "auto") {
+                error(pointer_append(p, "lod"),
+                      "expected a level of detail (a number >= 0) or \"auto\", not " + v["lod"].dump());
+                return nullptr;
+            }
+            auto_lod = true;
+            extra.set("lod", 0.0);  // the texture builds its levels now; the level is set once the camera is read
+            loader_keys.push_back("lod");
+        }
+        // Textures the texture itself uses (a noise whose colours are images): a shape using it uses them too.
+        std::vector<const Texture*> uses;
+        std::vector<const Texture*>* outer = m_collect;
+        m_collect = &uses;
+        std::shared_ptr<Texture> texture;
+        if (v.contains("fallback") || v.contains("fallback_size")) {
+            loader_keys.push_back("fallback");
+            loader_keys.push_back("fallback_size");
+            if (read_fallback(v, p, extra, loader_keys))
+                texture = create(m_reg.textures, Kind::texture, v, p, loader_keys, extra);
+        } else {
+            texture = create(m_reg.textures, Kind::texture, v, p, loader_keys, extra);
+        }
+        m_collect = outer;
+        if (!texture) return nullptr;
+        m_texture_uses[texture.get()] = std::move(uses);
+        if (auto_lod) {
+            auto* levels = dynamic_cast<LevelOfDetail*>(texture.get());
+            if (!levels)
+                error(pointer_append(p, "lod"),
+                      "this texture type has no levels of detail; \"auto\" is for image "
+                      "and cubemap textures");
+            else
+                m_auto_lod[texture.get()] = AutoLevel{levels, {}, false};
+        }
+        return texture;
+    }
+
+    // "fallback": a texture baked in place of the files of an image or cubemap texture when they are not found.
+    // Adds "bake" (and "bake_size") to `extra` and the file keys to `loader_keys` (so they are not passed on)
+    // when the files are missing. False when the fallback itself is wrong (reported).
+    bool read_fallback(const Json& v, const std::string& p, Params& extra, std::vector<std::string_view>& loader_keys) {
+        const std::string fp = pointer_append(p, "fallback"), sp = pointer_append(p, "fallback_size");
+        if (!v.contains("fallback")) {
+            error(sp, "'fallback_size' is only used with 'fallback'");
+            return false;
+        }
+        const std::string type = v.contains("type") && v["type"].is_string() ? v["type"].get<std::string>() : "";
+        if (type != "image" && type != "cubemap") {
+            error(fp, "'fallback' stands in for files that are not found: it is for image and cubemap textures, not '" +
+                          type + "'");
+            return false;
+        }
+        // Built (and so checked) even when the files are there: a scene that works here must work elsewhere.
+        std::shared_ptr<Texture> fallback;
+        const Json& f = v["fallback"];
+        if (f.is_string()) {
+            auto it = m_textures.find(f.get<std::string>());
+            if (it == m_textures.end()) {
+                error(fp, "no texture named '" + f.get<std::string>() +
+                              "' defined earlier in /textures (defined: " + join(keys_of(m_textures)) + ")");
+                return false;
+            }
+            fallback = it->second.object;
+        } else if (f.is_object()) {
+            std::vector<const Texture*>* outer = m_collect;
+            m_collect = nullptr;  // baked: its own lookups never see the shapes
+            fallback = make_texture(f, fp, false);
+            m_collect = outer;
+        } else {
+            error(fp, "expected a texture name or an inline texture, not " + describe(f));
+            return false;
+        }
+        if (!fallback) return false;
+        Params size;
+        if (v.contains("fallback_size")) {
+            const Json& z = v["fallback_size"];
+            if (type == "image") {
+                if (!z.is_array() || z.size() != 2) {
+                    error(sp, "expected [width, height] of the baked image, not " + describe(z));
+                    return false;
+                }
+                auto w = integer(z[0], pointer_append(sp, 0), 1, 16384),
+                     h = integer(z[1], pointer_append(sp, 1), 1, 16384);
+                if (!w || !h) return false;
+                size.set("bake_size", Params::List{static_cast<double>(*w), static_cast<double>(*h)});
+            } else {
+                auto n = integer(z, sp, 1, 8192);
+                if (!n) return false;
+                size.set("bake_size", static_cast<double>(*n));
+            }
+        }
+        const std::optional<std::string> missing = missing_files(v, type);
+        if (!missing) return true;
+        extra.set_object<Texture>("bake", fallback);
+        if (size.has("bake_size")) extra.set("bake_size", *size.get_value("bake_size"));
+        for (const auto& key : kFileKeys) loader_keys.push_back(key);
+        const std::string pos = m_diag.position(p);
+        m_out.warnings.push_back(m_diag.file() + (pos.empty() ? "" : ":" + pos) + ": " + p + ": " + *missing +
+                                 "; using its fallback");
+        return true;
+    }
+
+    // What is missing of an image or cubemap texture's files, or nullopt when everything is found.
+    std::optional<std::string> missing_files(const Json& v, const std::string& type) {
+        auto file = [&](const std::string& name) -> std::optional<std::string> {
+            if (m_search.find(name, m_folder)) return std::nullopt;
+            return "file '" + name + "' not found (looked in " + where() + ")";
+        };
+        auto text = [&](const char* key) {
+            return v.contains(key) && v[key].is_string() ? v[key].get<std::string>() : "";
+        };
+        if (type == "image") return file(text("filename"));
+        if (v.contains("cross")) return file(text("cross"));
+        if (v.contains("folder")) {
+            const std::string folder = text("folder");
+            const std::string ext = v.contains("extension") ? text("extension") : "jpg";
+            for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"})
+                if (auto m = file((fs::path(folder) / (std::string(face) + "." + ext)).string())) return m;
+            return std::nullopt;
+        }
+        for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"})
+            if (v.contains(face))
+                if (auto m = file(text(face))) return m;
+        return std::nullopt;
+    }
+
+    void note_use(const Texture* texture) {
+        if (!m_collect || !texture) return;
+        m_collect->push_back(texture);
+        if (auto it = m_texture_uses.find(texture); it != m_texture_uses.end())
+            m_collect->insert(m_collect->end(), it->second.begin(), it->second.end());
+    }
+
+    // A material with the textures it uses (their own textures included).
+    std::shared_ptr<const Material> make_material(const Json& m, const std::string& p,
+                                                  const std::vector<std::string_view>& loader_keys) {
+        std::vector<const Texture*> uses;
+        m_collect = &uses;
+        auto material = create(m_reg.materials, Kind::material, m, p, loader_keys);
+        m_collect = nullptr;
+        if (material) m_material_uses[material.get()] = std::move(uses);
+        return material;
+    }
+
+    // Where a sphere or disk lies, for the levels of its "auto" textures; nullopt for other shapes.
+    std::optional<UvFootprint> footprint(const Json& s, const std::string& p, const std::optional<Mat4>& transform) {
+        const std::string type = s["type"].get<std::string>();
+        if (type != "sphere" && type != "disk") return std::nullopt;
+        const Mat4 m = transform.value_or(Mat4(1.0f));
+        Vec3 centre(0.0f);
+        if (s.contains("center"))
+            if (auto c = vec3(s["center"], pointer_append(p, "center"))) centre = *c;
+        auto value = [&](const char* key, float fallback) {
+            return s.contains(key) && s[key].is_number() ? s[key].get<float>() : fallback;
+        };
+        if (type == "sphere") return sphere_footprint(m, centre, value("radius", 1.0f));
+        return disk_footprint(m, centre, value("radius", 1.0f), value("inner_radius", 0.0f));
+    }
+
+    // Sets the level of every "auto" texture: the finest any shape using it (or the sky) asks for.
+    void set_auto_levels() {
+        if (!m_camera) return;
+        const float samples = filtering_samples(m_out.job.settings);
+        for (auto& [texture, a] : m_auto_lod) {
+            float lod = std::numeric_limits<float>::infinity();
+            for (const UvFootprint& f : a.users)
+                lod = std::min(lod, surface_texture_lod(*m_camera, f, a.levels->texels_u(), samples));
+            if (a.environment) lod = std::min(lod, environment_texture_lod(*m_camera, a.levels->texels_u(), samples));
+            a.levels->set_lod(std::isfinite(lod) ? lod : 0.0f);
+        }
     }
 
     // ---- the document ----
@@ -482,7 +661,7 @@ private:
         for_list(doc, "materials", [&](const Json& m, const std::string& p) {
             if (!expect_object(m, p, "a material")) return;
             auto name = new_name(m, p, m_materials, Kind::material, true);
-            auto material = create(m_reg.materials, Kind::material, m, p, {"name"});
+            auto material = make_material(m, p, {"name"});
             if (name) m_materials[*name] = {std::move(material), p};
         });
         for_list(doc, "lights", [&](const Json& l, const std::string& p) {
@@ -497,6 +676,7 @@ private:
         if (!doc.contains("shapes")) error("", "missing key 'shapes': a scene needs at least one shape");
         const std::optional<CameraSpec> camera = read_camera(doc);
         read_render(doc, camera);
+        set_auto_levels();
         if (m_diag.empty()) {
             try {
                 m_out.job.scene = std::make_shared<const Scene>(std::move(objects));
@@ -559,23 +739,19 @@ private:
             }
             return read_matrix(v["matrix"], pointer_append(p, "matrix"));
         }
-        Mat4 t(1.0f), r(1.0f), s(1.0f);
+        Vec3 translate(0.0f), rotate(0.0f), scale(1.0f);
         bool ok = true;
         if (v.contains("translate")) {
             if (auto x = vec3(v["translate"], pointer_append(p, "translate")))
-                t = glm::translate(Mat4(1.0f), *x);
+                translate = *x;
             else
                 ok = false;
         }
         if (v.contains("rotate")) {
-            // Degrees about x, then y, then z (fixed axes).
-            if (auto a = vec3(v["rotate"], pointer_append(p, "rotate"))) {
-                r = glm::rotate(Mat4(1.0f), glm::radians(a->z), Vec3(0, 0, 1)) *
-                    glm::rotate(Mat4(1.0f), glm::radians(a->y), Vec3(0, 1, 0)) *
-                    glm::rotate(Mat4(1.0f), glm::radians(a->x), Vec3(1, 0, 0));
-            } else {
+            if (auto a = vec3(v["rotate"], pointer_append(p, "rotate")))
+                rotate = *a;
+            else
                 ok = false;
-            }
         }
         if (v.contains("scale")) {
             const std::string sp = pointer_append(p, "scale");
@@ -589,12 +765,13 @@ private:
                 k.reset();
             }
             if (k)
-                s = glm::scale(Mat4(1.0f), *k);
+                scale = *k;
             else
                 ok = false;
         }
         if (!ok) return std::nullopt;
-        return t * r * s;
+        // A part not given is the identity, which multiplies exactly: the same matrix as leaving it out.
+        return scene_transform(translate, rotate, scale);
     }
 
     std::optional<Mat4> read_matrix(const Json& v, const std::string& p) {
@@ -658,7 +835,7 @@ private:
                     ok = ok && material;
                 }
             } else if (m.is_object()) {
-                material = create(m_reg.materials, Kind::material, m, mp, {});
+                material = make_material(m, mp, {});
                 ok = ok && material;
             } else {
                 error(mp, "expected a material name or an inline material object, not " + describe(m));
@@ -689,6 +866,24 @@ private:
         }
         if (name) m_shapes[*name] = {shape, p};
         if (!shape || !ok || !visible) return;
+        if (auto it = m_material_uses.find(material.get()); it != m_material_uses.end()) {
+            std::optional<UvFootprint> where;
+            bool reported = false;
+            for (const Texture* t : it->second) {
+                auto a = m_auto_lod.find(t);
+                if (a == m_auto_lod.end()) continue;
+                if (!where) where = footprint(s, p, transform);
+                if (where) {
+                    a->second.users.push_back(*where);
+                } else if (!reported) {
+                    reported = true;
+                    error(pointer_append(p, "material"),
+                          "uses a texture with \"lod\": \"auto\", which is worked out for spheres and disks only, "
+                          "not a '" +
+                              s["type"].get<std::string>() + "'; give that texture a number as its lod");
+                }
+            }
+        }
         objects.push_back({shape, material, flags, fallback_name});
     }
 
@@ -891,6 +1086,8 @@ private:
             } else {
                 error(at("skybox"), "expected a texture name or an inline texture (a cubemap), not " + describe(sky));
             }
+            if (auto a = m_auto_lod.find(whitted.environment.get()); a != m_auto_lod.end())
+                a->second.environment = true;
         }
         read_tonemap(r, at("tonemap"));
         if (r.contains("output")) {
@@ -906,6 +1103,7 @@ private:
         if (!camera || !size_ok) return;
         camera->width = static_cast<int>(width);
         camera->height = static_cast<int>(height);
+        m_camera = camera;
         try {
             if (m_thin_lens)
                 m_out.job.camera = std::make_shared<const ThinLensCamera>(*camera, m_lens);
@@ -988,6 +1186,18 @@ private:
     bool m_thin_lens = false;
     LensSpec m_lens;
     LoadedScene m_out;
+
+    // "lod": "auto" textures and what they are seen on.
+    struct AutoLevel {
+        LevelOfDetail* levels;
+        std::vector<UvFootprint> users;
+        bool environment;
+    };
+    std::map<const Texture*, AutoLevel> m_auto_lod;
+    std::map<const Texture*, std::vector<const Texture*>> m_texture_uses;
+    std::map<const Material*, std::vector<const Texture*>> m_material_uses;
+    std::vector<const Texture*>* m_collect = nullptr;  // the textures the object being made uses
+    std::optional<CameraSpec> m_camera;                // with the final image size
 };
 
 SceneRegistries& builtin_registries() {
@@ -996,6 +1206,13 @@ SceneRegistries& builtin_registries() {
 }
 
 }  // namespace
+
+Mat4 scene_transform(const Vec3& translate, const Vec3& rotate_degrees, const Vec3& scale) {
+    const Mat4 r = glm::rotate(Mat4(1.0f), glm::radians(rotate_degrees.z), Vec3(0, 0, 1)) *
+                   glm::rotate(Mat4(1.0f), glm::radians(rotate_degrees.y), Vec3(0, 1, 0)) *
+                   glm::rotate(Mat4(1.0f), glm::radians(rotate_degrees.x), Vec3(1, 0, 0));
+    return glm::translate(Mat4(1.0f), translate) * r * glm::scale(Mat4(1.0f), scale);
+}
 
 LoadedScene parse_scene(std::string_view text, const fs::path& file, const SceneLoadOptions& options) {
     SceneRegistries& registries = options.registries ? *options.registries : builtin_registries();

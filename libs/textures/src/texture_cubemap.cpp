@@ -16,12 +16,15 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/core/file.hpp>
 #include <rtlab/textures/cube_map.hpp>
+#include <rtlab/textures/mip_map.hpp>
 
 #include "texture_params.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace rtlab {
 
@@ -128,6 +131,48 @@ private:
     std::shared_ptr<const Texture> m_inner;
     float m_scale;
 };
+
+// A cube map and its box-filtered levels (faces halved down to 1 texel), looked up between the two levels
+// around its lod: a star field seen through a wide lens averages its stars instead of flickering.
+class CubeMapLevels final : public Texture, public LevelOfDetail {
+public:
+    CubeMapLevels(std::array<Image, 6> faces, float intensity) : m_intensity(intensity) {
+        while (true) {
+            const bool last = faces[0].width() <= 1;
+            std::array<Image, 6> next;
+            if (!last)
+                for (std::size_t f = 0; f < 6; ++f) next[f] = downsample(faces[f]);
+            m_levels.push_back(std::make_shared<CubeMapTexture>(std::move(faces)));
+            if (last) break;
+            faces = std::move(next);
+        }
+        set_lod(0.0f);
+    }
+    RGB eval(const TextureLookup& q) const override {
+        RGB c = m_levels[static_cast<std::size_t>(m_blend.first)]->eval(q);
+        if (m_blend.blend > 0.0f)
+            c = lerp(c, m_levels[static_cast<std::size_t>(m_blend.second)]->eval(q), m_blend.blend);
+        return m_intensity == 1.0f ? c : c * m_intensity;
+    }
+    void set_lod(float lod) override {
+        m_blend = level_blend(lod, static_cast<int>(m_levels.size()));
+        m_lod = static_cast<float>(m_blend.first) + m_blend.blend;
+    }
+    float lod() const override { return m_lod; }
+    int texels_u() const override { return m_levels.front()->face_size(); }
+
+private:
+    std::vector<std::shared_ptr<const CubeMapTexture>> m_levels;
+    float m_intensity;
+    float m_lod = 0.0f;
+    LevelBlend m_blend;
+};
+
+std::array<Image, 6> faces_of(const CubeMapTexture& map) {
+    std::array<Image, 6> faces;
+    for (int f = 0; f < 6; ++f) faces[f] = map.face(static_cast<CubeFace>(f));
+    return faces;
+}
 }  // namespace
 
 void register_cubemap(TextureRegistry& registry) {
@@ -136,13 +181,32 @@ void register_cubemap(TextureRegistry& registry) {
         [](const Params& p) -> std::shared_ptr<Texture> {
             int faces_given = 0;
             for (const char* name : kFaceNames) faces_given += p.has(name) ? 1 : 0;
-            const int sources = (faces_given > 0 ? 1 : 0) + (p.has("cross") ? 1 : 0) + (p.has("folder") ? 1 : 0);
+            const int sources = (faces_given > 0 ? 1 : 0) + (p.has("cross") ? 1 : 0) + (p.has("folder") ? 1 : 0) +
+                                (p.has("bake") ? 1 : 0);
             if (sources != 1)
                 throw Error(p.context() +
-                            ": give exactly one of the six faces (px nx py ny pz nz), 'cross' or 'folder'");
+                            ": give exactly one of the six faces (px nx py ny pz nz), 'cross', 'folder' or 'bake'");
+            if (p.has("bake_size") && !p.has("bake")) fail_param(p, "bake_size", "is only used with 'bake'");
             if (p.has("extension") && !p.has("folder")) fail_param(p, "extension", "is only used with 'folder'");
             const ColorEncoding encoding = get_encoding(p);
             const float intensity = positive_float(p, "intensity", 1.0f, true);
+            // Without "lod", no pyramid (a plain float: GCC 12 warns falsely on an optional here).
+            const bool levelled = p.has("lod");
+            const float lod = levelled ? float_in_range(p, "lod", 0.0f, 0.0f, 64.0f) : 0.0f;
+            if (p.has("bake")) {
+                const auto texture = p.get_object<Texture>("bake");
+                if (!texture) fail_param(p, "bake", "must be a texture");
+                const int size = bounded_int(p, "bake_size", 512, 1, 8192);
+                std::array<Image, 6> faces = bake_cube_faces(*texture, size);
+                if (!levelled) {
+                    auto map = std::make_shared<CubeMapTexture>(std::move(faces));
+                    if (intensity == 1.0f) return map;
+                    return std::make_shared<ScaledTexture>(map, intensity);
+                }
+                auto levels = std::make_shared<CubeMapLevels>(std::move(faces), intensity);
+                levels->set_lod(lod);
+                return levels;
+            }
             std::array<std::filesystem::path, 6> paths;
             if (!p.has("cross")) {
                 const bool use_folder = p.has("folder");
@@ -164,13 +228,20 @@ void register_cubemap(TextureRegistry& registry) {
             } catch (const Error& e) {
                 throw Error(p.context() + ": " + e.what());
             }
+            if (levelled) {
+                auto levels = std::make_shared<CubeMapLevels>(faces_of(*map), intensity);
+                levels->set_lod(lod);
+                return levels;
+            }
             if (intensity == 1.0f) return map;
             return std::make_shared<ScaledTexture>(map, intensity);
         },
         "environment cube map by lookup.direction, OpenGL face convention, seamless bilinear filtering. "
         "px nx py ny pz nz: six face files, or cross: one horizontal-cross file (4N x 3N), or folder: a folder "
         "with px.<extension> ... (extension default jpg); encoding: srgb | linear (default srgb); "
-        "intensity >= 0 (default 1)");
+        "intensity >= 0 (default 1); lod >= 0: box-filtered levels, looked up between the two around lod "
+        "(default: none); bake: a texture evaluated by direction into six faces of bake_size (default 512) instead "
+        "of files");
 }
 
 }  // namespace detail

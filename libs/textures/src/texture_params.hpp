@@ -26,5 +26,6 @@ void register_perlin(TextureRegistry& registry);
 void register_simplex(TextureRegistry& registry);
 void register_image(TextureRegistry& registry);
 void register_cubemap(TextureRegistry& registry);
+void register_stars(TextureRegistry& registry);
 
 }  // namespace rtlab::detail

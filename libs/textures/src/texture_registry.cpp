@@ -13,6 +13,7 @@ void register_builtins(TextureRegistry& registry) {
     detail::register_simplex(registry);
     detail::register_image(registry);
     detail::register_cubemap(registry);
+    detail::register_stars(registry);
 }
 
 TextureRegistry make_texture_registry() {

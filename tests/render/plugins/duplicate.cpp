@@ -19,22 +19,17 @@ protected:
 
 std::shared_ptr<rtlab::Material> make_black(const rtlab::Params&) { return std::make_shared<Black>(); }
 std::shared_ptr<rtlab::Texture> make_nothing(const rtlab::Params&) { return nullptr; }
+void register_types(rtlab::PluginRegistries& r) {
+#if defined(SELF_CLASH)
+    r.materials.add("twice", make_black);
+    r.materials.add("twice", make_black);
+#else
+    r.materials.add("duplicate-only", make_black);
+    r.materials.add("toon", make_black);
+    r.textures.add("checker", make_nothing);
+#endif
+}
+
 }  // namespace
 
-RTLAB_PLUGIN_EXPORT const RtlabPluginRecord* rtlab_plugin_query(void) {
-    static const RtlabPluginRecord record = rtlab::make_plugin_record("a module registering taken names");
-    return &record;
-}
-
-RTLAB_PLUGIN_EXPORT int rtlab_plugin_register(const RtlabPluginRegistries* registries, char* error, size_t error_size) {
-    return rtlab::plugin_register(registries, error, error_size, [](rtlab::PluginRegistries& r) {
-#if defined(SELF_CLASH)
-        r.materials.add("twice", make_black);
-        r.materials.add("twice", make_black);
-#else
-        r.materials.add("duplicate-only", make_black);
-        r.materials.add("toon", make_black);
-        r.textures.add("checker", make_nothing);
-#endif
-    });
-}
+RTLAB_DEFINE_PLUGIN("a module registering taken names", register_types)

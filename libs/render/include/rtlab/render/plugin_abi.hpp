@@ -13,6 +13,9 @@
 /// with). Only when all agree does it call rtlab_plugin_register, which adds the module's types to the
 /// registries it is given and returns 0, or writes a message into `error` and returns non-zero. No exception
 /// crosses the C boundary: rtlab::plugin_register() below catches them.
+///
+/// A module writes both with one line, RTLAB_DEFINE_PLUGIN("description", register_types), where
+/// register_types is a function `void register_types(rtlab::PluginRegistries&)` (at the end of this file).
 #include <rtlab/render/plugin_build_info.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>
@@ -207,3 +210,17 @@ int plugin_register(const RtlabPluginRegistries* registries, char* error, std::s
 }
 
 }  // namespace rtlab
+
+/// Defines both entry points of a module: rtlab_plugin_query returns the record of this compilation with
+/// `description`, and rtlab_plugin_register calls `fill(rtlab::PluginRegistries&)` through
+/// rtlab::plugin_register. `fill` names a function (or a lambda variable): a lambda written inline would
+/// split into macro arguments at its first top-level comma. Use it once per module, at namespace scope.
+#define RTLAB_DEFINE_PLUGIN(description, fill)                                                          \
+    RTLAB_PLUGIN_EXPORT const RtlabPluginRecord* rtlab_plugin_query(void) {                             \
+        static const RtlabPluginRecord record = ::rtlab::make_plugin_record(description);               \
+        return &record;                                                                                 \
+    }                                                                                                   \
+    RTLAB_PLUGIN_EXPORT int rtlab_plugin_register(const RtlabPluginRegistries* registries, char* error, \
+                                                  size_t error_size) {                                  \
+        return ::rtlab::plugin_register(registries, error, error_size, fill);                           \
+    }

@@ -63,6 +63,11 @@ struct LoadedScene {
     std::vector<std::string> warnings;         ///< non-fatal problems (a mesh's missing .mtl, say)
 };
 
+/// A scene file's {"translate", "rotate", "scale"} transform: scale, then rotate about x, then y, then z
+/// (fixed axes, degrees), then translate. A program that builds a scene in code calls it to place objects
+/// exactly (bit for bit) as the same scene written as a file.
+Mat4 scene_transform(const Vec3& translate, const Vec3& rotate_degrees, const Vec3& scale);
+
 /// Loads a scene file. All problems of the file are collected and thrown together as one rtlab::Error,
 /// one per line: "FILE:LINE:COLUMN: /json/pointer: what was wrong and what was expected" (syntax errors
 /// give the position of the error). Unknown keys, duplicate keys, unknown types and names that refer to

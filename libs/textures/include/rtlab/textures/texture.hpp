@@ -34,7 +34,7 @@ public:
 using TextureRegistry = Registry<Texture>;
 
 /// Registers every built-in texture by name: solid, checker, checker3d, mandelbrot, perlin, simplex,
-/// image, cubemap. Each registration's doc() lists its parameters and their defaults. A plugin adds its
+/// image, cubemap, stars. Each registration's doc() lists its parameters and their defaults. A plugin adds its
 /// own textures to the same registry with TextureRegistry::add, without touching this library.
 void register_builtins(TextureRegistry& registry);
 
