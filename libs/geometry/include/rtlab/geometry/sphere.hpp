@@ -16,9 +16,11 @@ public:
     bool defers_record() const override { return true; }
     bool intersect_distance(const Ray& ray, float& t) const override;
     void complete_hit(const Ray& ray, float t, SurfaceHit& hit) const override;
+    void complete_hit_without_uv(const Ray& ray, float t, SurfaceHit& hit) const override;
 
 private:
     bool nearest_root(const Ray& ray, float& t) const;
+    void fill(const Ray& ray, float t, SurfaceHit& hit, bool with_uv) const;
     Point3 m_centre;
     float m_radius;
 };
