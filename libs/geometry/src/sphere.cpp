@@ -20,10 +20,13 @@ inline bool Sphere::nearest_root(const Ray& ray, float& t) const {
     const Vec3& d = ray.direction;
     const float a = glm::dot(d, d);
     const float b = glm::dot(oc, d);
+    const float c = glm::dot(oc, oc) - m_radius * m_radius;
+    // Starting outside and moving away: both roots are negative as stable_roots() rounds them (q < 0, so
+    // c / q and q / a are <= 0), which no tmin >= 0 admits. Most rays of a scene pass most spheres so.
+    if (b > 0.0f && c > 0.0f && ray.tmin >= 0.0f) return false;
     // |oc|^2 - b^2 / a loses everything for a far ray; the perpendicular vector keeps full precision.
     const Vec3 perp = oc - (b / a) * d;
     const float disc = a * (m_radius - glm::length(perp)) * (m_radius + glm::length(perp));
-    const float c = glm::dot(oc, oc) - m_radius * m_radius;
     float t0, t1;
     if (!geometry::stable_roots(a, b, c, disc, t0, t1)) return false;
     if (t0 > ray.tmin && t0 < ray.tmax)
