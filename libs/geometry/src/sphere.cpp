@@ -14,38 +14,12 @@ Sphere::Sphere(const Point3& centre, float radius) : m_centre(centre), m_radius(
 
 AABB Sphere::bounds() const { return {m_centre - Vec3(m_radius), m_centre + Vec3(m_radius)}; }
 
-// Inline: every sphere of a scene's list runs it once per ray, and the call cost a tenth of the test.
-inline bool Sphere::nearest_root(const Ray& ray, float& t) const {
-    const Vec3 oc = ray.origin - m_centre;
-    const Vec3& d = ray.direction;
-    const float a = glm::dot(d, d);
-    const float b = glm::dot(oc, d);
-    const float c = glm::dot(oc, oc) - m_radius * m_radius;
-    // Starting outside and moving away: both roots are negative as stable_roots() rounds them (q < 0, so
-    // c / q and q / a are <= 0), which no tmin >= 0 admits. Most rays of a scene pass most spheres so.
-    if (b > 0.0f && c > 0.0f && ray.tmin >= 0.0f) return false;
-    // |oc|^2 - b^2 / a loses everything for a far ray; the perpendicular vector keeps full precision.
-    const Vec3 perp = oc - (b / a) * d;
-    const float disc = a * (m_radius - glm::length(perp)) * (m_radius + glm::length(perp));
-    float t0, t1;
-    if (!geometry::stable_roots(a, b, c, disc, t0, t1)) return false;
-    if (t0 > ray.tmin && t0 < ray.tmax)
-        t = t0;
-    else if (t1 > ray.tmin && t1 < ray.tmax)
-        t = t1;
-    else
-        return false;
-    return true;
-}
-
 bool Sphere::intersect(const Ray& ray, SurfaceHit& hit) const {
     float t;
     if (!nearest_root(ray, t)) return false;
     complete_hit(ray, t, hit);
     return true;
 }
-
-bool Sphere::intersect_distance(const Ray& ray, float& t) const { return nearest_root(ray, t); }
 
 void Sphere::complete_hit(const Ray& ray, float t, SurfaceHit& hit) const { fill(ray, t, hit, true); }
 
@@ -71,11 +45,6 @@ inline void Sphere::fill(const Ray& ray, float t, SurfaceHit& hit, bool with_uv)
         uv.y = 1.0f - std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi;
     }
     geometry::fill_hit(hit, ray, t, p, error, n, uv, Vec3(n.z, 0.0f, -n.x), 0, this);
-}
-
-bool Sphere::occluded(const Ray& ray) const {
-    float t;
-    return nearest_root(ray, t);
 }
 
 }  // namespace rtlab
