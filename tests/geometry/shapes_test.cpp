@@ -228,6 +228,20 @@ TEST_CASE("two-step closest hits give the one-step record bit for bit whether de
             CHECK(two.tangent == one.tangent);
             CHECK(two.front_face == one.front_face);
             CHECK(two.shape == one.shape);
+            // Without uv: every other field the same, the uv left at its default where the shape skips it.
+            SurfaceHit three;
+            three.uv = Vec2(-7.0f);
+            shape->complete_hit_without_uv(ray, t, three);
+            CHECK(three.t == one.t);
+            CHECK(three.point == one.point);
+            CHECK(three.point_error == one.point_error);
+            CHECK(three.object_point == one.object_point);
+            CHECK(three.geometric_normal == one.geometric_normal);
+            CHECK(three.shading_normal == one.shading_normal);
+            CHECK(three.tangent == one.tangent);
+            CHECK(three.front_face == one.front_face);
+            CHECK(three.shape == one.shape);
+            CHECK(three.uv == (shape == &sphere ? Vec2(0.0f) : one.uv));
         }
     }
     CHECK(hits > 600);  // 945 of the 6,000 rays hit (measured): enough that the comparison means something

@@ -5,6 +5,7 @@
 #include <rtlab/geometry/instance.hpp>
 #include <rtlab/geometry/mesh_io.hpp>
 #include <rtlab/render/render_job.hpp>
+#include <rtlab/textures/texture.hpp>
 
 #include <catch2/catch.hpp>
 #include <shared_data.hpp>
@@ -140,6 +141,80 @@ TEST_CASE("list and kd-tree scenes answer every query as the brute-force ShapeLi
     CHECK(hits < 19000);
     CHECK(occluded > 3000);
     CHECK(transmissive > 300);
+}
+
+TEST_CASE("intersect_surface and shadow answer as the separate queries with uv left out only where unread", "[scene]") {
+    // The random scene plus textured spheres (a checker kd reads uv; a textured opacity makes one a
+    // transmissive caster that reads it too). Lists, trees and ShapeList (the SceneQuery defaults) must give
+    // the separate queries' records bit for bit, but for the uv of an untextured object's sphere.
+    auto objects = random_objects(60, 20, 11);
+    Params checker;
+    checker.set("tiles_u", 8.0);
+    const auto board = std::shared_ptr<const Texture>(make_texture_registry().create("checker", checker));
+    Params textured;
+    textured.set_object<const Texture>("albedo", board);
+    Params cutout;
+    cutout.set_object<const Texture>("opacity", board);
+    for (int i = 0; i < 6; ++i) {
+        const Point3 c(-6.0f + 2.4f * static_cast<float>(i), 1.0f + 0.3f * static_cast<float>(i), -8.0f);
+        objects.push_back({std::make_shared<Sphere>(c, 0.8f), material("lambert", i % 2 ? cutout : textured), {}, ""});
+    }
+    objects[5].flags.casts_shadows = false;
+    ShapeList plain;
+    for (const auto& o : objects) plain.add(o.shape, o.material, o.flags);
+    const Scene list(objects, {kAlwaysList});
+    const Scene tree(objects, {1});
+    auto same_record = [](const SurfaceHit& a, const SurfaceHit& b, bool uv) {
+        return a.t == b.t && a.point == b.point && a.point_error == b.point_error && a.object_point == b.object_point &&
+               a.geometric_normal == b.geometric_normal && a.shading_normal == b.shading_normal &&
+               a.tangent == b.tangent && a.primitive == b.primitive && a.front_face == b.front_face &&
+               a.shape == b.shape && (!uv || a.uv == b.uv);
+    };
+    std::mt19937 rng(5);
+    int mismatches = 0, hits = 0, unread_uv = 0, textured_hits = 0, opaque = 0, crossings = 0;
+    for (const SceneQuery* scene : {static_cast<const SceneQuery*>(&plain), static_cast<const SceneQuery*>(&list),
+                                    static_cast<const SceneQuery*>(&tree)}) {
+        for (int i = 0; i < 6000; ++i) {
+            const Ray r = random_ray(rng);
+            SurfaceHit want, got;
+            SurfaceInfo info;
+            const bool hit = scene->intersect(r, want);
+            if (hit != scene->intersect_surface(r, got, info)) ++mismatches;
+            if (hit) {
+                ++hits;
+                const SurfaceInfo expected = scene->surface(want);
+                const bool reads = expected.material->reads_lookup();
+                if (!same_record(want, got, reads) || info.material != expected.material) ++mismatches;
+                if (!reads && want.uv != got.uv) ++unread_uv;
+                if (reads) ++textured_hits;
+            }
+            for (const bool check_opaque : {true, false}) {
+                SurfaceHit w2, g2;
+                SurfaceInfo i2;
+                const ShadowHit met = scene->shadow(r, check_opaque, g2, i2);
+                if (check_opaque && scene->occluded(r)) {
+                    opaque += check_opaque;
+                    if (met != ShadowHit::opaque) ++mismatches;
+                    continue;
+                }
+                const bool crossing = scene->intersect_transmissive(r, w2);
+                if (met != (crossing ? ShadowHit::transmissive : ShadowHit::clear)) ++mismatches;
+                if (!crossing) continue;
+                ++crossings;
+                const SurfaceInfo expected = scene->surface(w2);
+                if (!same_record(w2, g2, expected.material->reads_lookup()) || i2.material != expected.material)
+                    ++mismatches;
+            }
+        }
+    }
+    CHECK(mismatches == 0);
+    // Every case must be reached: hits on untextured spheres whose uv was left out, textured hits, blocked
+    // and crossing shadow segments.
+    CHECK(hits > 5000);
+    CHECK(unread_uv > 500);
+    CHECK(textured_hits > 100);
+    CHECK(opaque > 3000);
+    CHECK(crossings > 300);
 }
 
 TEST_CASE("list and kd-tree scenes render identical images with mirrors and glass", "[scene]") {

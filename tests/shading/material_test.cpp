@@ -11,6 +11,8 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace rtlab;
 
@@ -400,4 +402,64 @@ TEST_CASE("ashikhmin-shirley is the AshikhminShirleyBrdf times cos, nu along loc
     iso.set("nu", 200.0);
     const auto mi = make("ashikhmin-shirley", iso);
     CHECK(mi->terms({}).shape_v == 200.0f);
+}
+
+namespace {
+// A model made outside the library (as a plugin's would be) that never says its terms are constant.
+class PlainMaterial final : public Material {
+public:
+    PlainMaterial() : Material(Whitted{}) {}
+    RGB direct(const SurfaceTerms&, const Vec3&, const Vec3&, Convention) const override { return {}; }
+
+protected:
+    void local_terms(const TextureLookup&, SurfaceTerms& t) const override { t.diffuse = RGB(0.25f); }
+};
+}  // namespace
+
+TEST_CASE("constant materials give one record for every lookup and textured ones still read theirs", "[material]") {
+    // Lookups that a texture would tell apart; a constant material must not.
+    TextureLookup a, b;
+    a.uv = {0.1f, 0.7f};
+    a.point = {1.0f, 2.0f, 3.0f};
+    b.uv = {0.9f, 0.2f};
+    b.point = {-4.0f, 0.5f, 8.0f};
+    auto same = [](const SurfaceTerms& x, const SurfaceTerms& y) {
+        return x.diffuse == y.diffuse && x.specular == y.specular && x.shape_u == y.shape_u && x.shape_v == y.shape_v &&
+               x.kr == y.kr && x.kt == y.kt && x.emission == y.emission && x.opacity == y.opacity;
+    };
+    Params phong;
+    phong.set("kd", Params::List{0.3, 0.2, 0.1}).set("ks", 0.4).set("exponent", 30.0).set("kr", 0.25);
+    for (const auto& [name, params] : std::vector<std::pair<std::string, Params>>{{"lambert", {}},
+                                                                                  {"phong", phong},
+                                                                                  {"blinn-phong", {}},
+                                                                                  {"cook-torrance", {}},
+                                                                                  {"ashikhmin-shirley", {}},
+                                                                                  {"mirror", {}},
+                                                                                  {"glass", {}}}) {
+        INFO(name);
+        const auto m = make(name, params);
+        CHECK_FALSE(m->reads_lookup());
+        CHECK(same(m->terms(a), m->terms(b)));
+    }
+    const SurfaceTerms p = make("phong", phong)->terms(a);
+    CHECK(p.diffuse == RGB(0.3f, 0.2f, 0.1f));
+    CHECK(p.specular == RGB(0.4f));
+    CHECK(p.shape_u == 30.0f);
+    CHECK(p.kr == RGB(0.25f));
+    CHECK(p.opacity == 1.0f);
+    // One texture anywhere, in the model's own terms or in the Whitted ones, and every hit is looked up.
+    Params kd, kt, emission;
+    kd.set_object<const Texture>("kd", std::make_shared<UvTexture>());
+    kt.set_object<const Texture>("kt", std::make_shared<UvTexture>());
+    emission.set_object<const Texture>("emission", std::make_shared<UvTexture>());
+    for (Params* params : {&kd, &kt, &emission}) {
+        const auto m = make("phong", *params);
+        CHECK(m->reads_lookup());
+        CHECK_FALSE(same(m->terms(a), m->terms(b)));
+    }
+    CHECK(make("phong", kd)->terms(b).diffuse == RGB(0.9f, 0.2f, 8.0f));
+    // A model that does not declare its terms constant keeps its own local_terms on every hit.
+    const PlainMaterial plain;
+    CHECK(plain.reads_lookup());
+    CHECK(plain.terms(a).diffuse == RGB(0.25f));
 }

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 using namespace rtlab;
 
@@ -37,6 +39,53 @@ TEST_CASE("checker parity at tile borders belongs to the tile above and holds fo
     CHECK(even(*t, -262144.25f, 0.1f) == 0.0f);
     // Non-finite uv does not crash; it is shown as an even tile.
     CHECK(even(*t, std::nanf(""), 0.0f) == 1.0f);
+}
+
+TEST_CASE("checker parity equals the fmod rule for far and non-finite uv", "[checker]") {
+    // The rule the parity shortcut replaces: |fmod(i, 2)| + |fmod(j, 2)| == 1 is odd.
+    auto expected = [](double tu, double tv, float u, float v) {
+        const double i = std::floor(static_cast<double>(u) * tu), j = std::floor(static_cast<double>(v) * tv);
+        return std::abs(std::fmod(i, 2.0)) + std::abs(std::fmod(j, 2.0)) == 1.0 ? 0.0f : 1.0f;
+    };
+    const float inf = std::numeric_limits<float>::infinity();
+    const std::vector<float> values{0.0f,
+                                    -0.0f,
+                                    0.3f,
+                                    -0.3f,
+                                    1e7f,
+                                    -1e7f,
+                                    16777215.0f,
+                                    1e15f,
+                                    -1e15f,
+                                    1e16f,
+                                    -1e16f,
+                                    9e15f,
+                                    1e30f,
+                                    -1e30f,
+                                    3.4e38f,
+                                    inf,
+                                    -inf,
+                                    std::nanf(""),
+                                    4503599627370495.5f,
+                                    0x1p52f,
+                                    0x1p53f,
+                                    -0x1p53f,
+                                    0x1.fffffep52f,
+                                    -0x1.fffffep52f,
+                                    0x1p-140f};
+    int odd = 0;
+    for (const double tiles : {1.0, 3.0, 7.0, 16777215.0}) {
+        const auto t =
+            registry().create("checker", Params{}.set("tiles_u", tiles).set("tiles_v", tiles == 1.0 ? 5.0 : 1.0));
+        const double tv = tiles == 1.0 ? 5.0 : 1.0;
+        for (const float u : values)
+            for (const float v : values) {
+                const float e = expected(tiles, tv, u, v);
+                CHECK(even(*t, u, v) == e);
+                odd += e == 0.0f ? 1 : 0;
+            }
+    }
+    CHECK(odd > 100);  // the values reach odd tiles too, not only the even fallback
 }
 
 TEST_CASE("checker counts tiles per unit and defaults tiles_v to tiles_u", "[checker]") {

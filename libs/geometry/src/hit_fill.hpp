@@ -2,6 +2,7 @@
 // Filling a SurfaceHit the same way for every analytic shape (private to the geometry library).
 #include <rtlab/core/frame.hpp>
 #include <rtlab/core/ray.hpp>
+#include <rtlab/geometry/quadratic.hpp>
 #include <rtlab/geometry/surface_hit.hpp>
 
 #include <cmath>
@@ -11,9 +12,17 @@ namespace rtlab::geometry {
 /// point_error: per-axis bound on the distance of point from the true surface; outward: unit normal on the
 /// side the shape calls outside; tangent_hint: dP/du, need not be unit or orthogonal (a zero hint, as at a
 /// sphere's poles, falls back to an arbitrary tangent).
-inline void fill_hit(SurfaceHit& hit, const Ray& ray, float t, const Point3& point, const Vec3& point_error,
-                     const Normal3& outward, Vec2 uv, const Vec3& tangent_hint, std::uint32_t primitive,
-                     const Shape* shape) {
+/// The unit tangent fill_hit() stores for a tangent hint and a unit normal.
+inline Vec3 unit_tangent(const Vec3& tangent_hint, const Normal3& outward) {
+    const Vec3 tangent = tangent_hint - glm::dot(tangent_hint, outward) * outward;
+    const float len = glm::length(tangent);
+    return len > 1e-12f && std::isfinite(len) ? tangent / len : Frame::from_normal(outward).s;
+}
+
+/// fill_hit() with the unit tangent already worked out (by unit_tangent(): a flat shape's is one for all hits).
+inline void fill_hit_unit_tangent(SurfaceHit& hit, const Ray& ray, float t, const Point3& point,
+                                  const Vec3& point_error, const Normal3& outward, Vec2 uv, const Vec3& tangent,
+                                  std::uint32_t primitive, const Shape* shape) {
     hit.t = t;
     hit.point = point;
     hit.point_error = point_error;
@@ -21,12 +30,17 @@ inline void fill_hit(SurfaceHit& hit, const Ray& ray, float t, const Point3& poi
     hit.geometric_normal = outward;
     hit.shading_normal = outward;
     hit.uv = uv;
-    Vec3 tangent = tangent_hint - glm::dot(tangent_hint, outward) * outward;
-    const float len = glm::length(tangent);
-    hit.tangent = len > 1e-12f && std::isfinite(len) ? tangent / len : Frame::from_normal(outward).s;
+    hit.tangent = tangent;
     hit.primitive = primitive;
     hit.front_face = glm::dot(ray.direction, outward) < 0.0f;
     hit.shape = shape;
+}
+
+inline void fill_hit(SurfaceHit& hit, const Ray& ray, float t, const Point3& point, const Vec3& point_error,
+                     const Normal3& outward, Vec2 uv, const Vec3& tangent_hint, std::uint32_t primitive,
+                     const Shape* shape) {
+    fill_hit_unit_tangent(hit, ray, t, point, point_error, outward, uv, unit_tangent(tangent_hint, outward), primitive,
+                          shape);
 }
 
 /// Per-axis bound on the rounding of base + x s + y t + z n (a point given in a frame), plus the frame's own
@@ -36,23 +50,6 @@ inline Vec3 frame_point_error(const Point3& world, const Frame& f, const Vec3& l
     const Vec3 as = glm::abs(f.s), at = glm::abs(f.t), an = glm::abs(f.n), al = glm::abs(local);
     return gamma_bound(8) * (al.x * as + al.y * at + al.z * an) + gamma_bound(2) * glm::abs(world) +
            local_error.x * as + local_error.y * at + local_error.z * an;
-}
-
-/// Roots of a t^2 + 2 b t + c = 0 without catastrophic cancellation: the larger-magnitude root from
-/// -(b + sign(b) sqrt(disc)), the other from c / q. `perp2` is the squared distance of the centre from the
-/// ray's line times a (the discriminant a r^2 - |a oc - b d|^2 / a computed without subtracting two large
-/// numbers, after Haines et al., Ray Tracing Gems ch. 7). Returns false when the line misses.
-inline bool stable_roots(float a, float b, float c, float disc, float& t0, float& t1) {
-    if (!(disc >= 0.0f) || !(a > 0.0f)) return false;
-    const float q = -(b + std::copysign(std::sqrt(disc), b));
-    if (q == 0.0f) {  // b = 0 and a tangent ray: one double root
-        t0 = t1 = 0.0f;
-        return c == 0.0f;
-    }
-    t0 = c / q;
-    t1 = q / a;
-    if (t0 > t1) std::swap(t0, t1);
-    return true;
 }
 
 }  // namespace rtlab::geometry

@@ -10,6 +10,7 @@ Quad::Quad(const Point3& corner, const Vec3& edge_u, const Vec3& edge_v) : m_cor
     if (!(glm::dot(n, n) > 0.0f) || !is_finite(n)) throw Error("quad: the edges must be finite and not parallel");
     m_normal = glm::normalize(n);
     m_w = n / glm::dot(n, n);
+    m_tangent = geometry::unit_tangent(m_u, m_normal);
 }
 
 AABB Quad::bounds() const {
@@ -18,7 +19,8 @@ AABB Quad::bounds() const {
     return b;
 }
 
-bool Quad::hit_params(const Ray& ray, float& t, float& alpha, float& beta) const {
+// Inline: a scene's list runs it for every ray.
+inline bool Quad::hit_params(const Ray& ray, float& t, float& alpha, float& beta) const {
     const float denom = glm::dot(m_normal, ray.direction);
     if (denom == 0.0f || !std::isfinite(denom)) return false;
     t = glm::dot(m_normal, m_corner - ray.origin) / denom;
@@ -36,7 +38,7 @@ bool Quad::intersect(const Ray& ray, SurfaceHit& hit) const {
     // terms (gamma(3)); two more for the plane the test uses, whose unit normal is rounded off the edges'.
     const Point3 p = m_corner + alpha * m_u + beta * m_v;
     const Vec3 error = gamma_bound(5) * (glm::abs(m_corner) + glm::abs(alpha * m_u) + glm::abs(beta * m_v));
-    geometry::fill_hit(hit, ray, t, p, error, m_normal, {alpha, beta}, m_u, 0, this);
+    geometry::fill_hit_unit_tangent(hit, ray, t, p, error, m_normal, {alpha, beta}, m_tangent, 0, this);
     return true;
 }
 

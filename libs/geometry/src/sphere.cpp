@@ -14,26 +14,6 @@ Sphere::Sphere(const Point3& centre, float radius) : m_centre(centre), m_radius(
 
 AABB Sphere::bounds() const { return {m_centre - Vec3(m_radius), m_centre + Vec3(m_radius)}; }
 
-bool Sphere::nearest_root(const Ray& ray, float& t) const {
-    const Vec3 oc = ray.origin - m_centre;
-    const Vec3& d = ray.direction;
-    const float a = glm::dot(d, d);
-    const float b = glm::dot(oc, d);
-    // |oc|^2 - b^2 / a loses everything for a far ray; the perpendicular vector keeps full precision.
-    const Vec3 perp = oc - (b / a) * d;
-    const float disc = a * (m_radius - glm::length(perp)) * (m_radius + glm::length(perp));
-    const float c = glm::dot(oc, oc) - m_radius * m_radius;
-    float t0, t1;
-    if (!geometry::stable_roots(a, b, c, disc, t0, t1)) return false;
-    if (t0 > ray.tmin && t0 < ray.tmax)
-        t = t0;
-    else if (t1 > ray.tmin && t1 < ray.tmax)
-        t = t1;
-    else
-        return false;
-    return true;
-}
-
 bool Sphere::intersect(const Ray& ray, SurfaceHit& hit) const {
     float t;
     if (!nearest_root(ray, t)) return false;
@@ -41,9 +21,11 @@ bool Sphere::intersect(const Ray& ray, SurfaceHit& hit) const {
     return true;
 }
 
-bool Sphere::intersect_distance(const Ray& ray, float& t) const { return nearest_root(ray, t); }
+void Sphere::complete_hit(const Ray& ray, float t, SurfaceHit& hit) const { fill(ray, t, hit, true); }
 
-void Sphere::complete_hit(const Ray& ray, float t, SurfaceHit& hit) const {
+void Sphere::complete_hit_without_uv(const Ray& ray, float t, SurfaceHit& hit) const { fill(ray, t, hit, false); }
+
+inline void Sphere::fill(const Ray& ray, float t, SurfaceHit& hit, bool with_uv) const {
     // Relative to the centre, then projected back onto the sphere (Pharr et al., pbrt-v4): the projection
     // removes the radial error of o + t d, which is what a spawned ray must clear, leaving gamma(5) |rel|.
     Vec3 rel = (ray.origin - m_centre) + t * ray.direction;
@@ -56,15 +38,13 @@ void Sphere::complete_hit(const Ray& ray, float t, SurfaceHit& hit) const {
     const Point3 p = m_centre + rel;
     const Vec3 error = gamma_bound(5) * glm::abs(rel) + gamma_bound(1) * glm::abs(p);
     const Normal3 n = glm::normalize(rel);
-    const float phi = std::atan2(-n.z, n.x);  // eastwards from -x
-    const float u = (phi + kPi) / (2.0f * kPi);
-    const float v = 1.0f - std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi;
-    geometry::fill_hit(hit, ray, t, p, error, n, {u, v}, Vec3(n.z, 0.0f, -n.x), 0, this);
-}
-
-bool Sphere::occluded(const Ray& ray) const {
-    float t;
-    return nearest_root(ray, t);
+    Vec2 uv(0.0f);
+    if (with_uv) {
+        const float phi = std::atan2(-n.z, n.x);  // eastwards from -x
+        uv.x = (phi + kPi) / (2.0f * kPi);
+        uv.y = 1.0f - std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi;
+    }
+    geometry::fill_hit(hit, ray, t, p, error, n, uv, Vec3(n.z, 0.0f, -n.x), 0, this);
 }
 
 }  // namespace rtlab

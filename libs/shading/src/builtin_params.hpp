@@ -32,6 +32,7 @@ class ColourChannel {
 public:
     explicit ColourChannel(std::shared_ptr<const Texture> texture);
     RGB eval(const TextureLookup& q) const { return m_texture ? sanitise(m_texture->eval(q)) : m_constant; }
+    bool is_constant() const { return !m_texture; }
 
 private:
     static RGB sanitise(const RGB& c);
@@ -45,6 +46,7 @@ class ScalarChannel {
 public:
     ScalarChannel(std::shared_ptr<const Texture> texture, float lo, float hi, float nan_value);
     float eval(const TextureLookup& q) const { return m_texture ? clamp(scalar(m_texture->eval(q))) : m_constant; }
+    bool is_constant() const { return !m_texture; }
 
 private:
     float clamp(float x) const;

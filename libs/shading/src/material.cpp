@@ -35,6 +35,17 @@ Material::Material(Whitted whitted) : m_whitted(std::move(whitted)) {
     const bool kt_zero = !m_kt.texture && m_kt.value.is_black();
     const bool opaque = !m_opacity.texture && scalar(m_opacity.value) >= 1.0f;
     m_transmits = !(kt_zero && opaque);
+    if (!m_kt.texture && !m_opacity.texture) {
+        m_shadow = looked_up_shadow_transmittance(TextureLookup{});
+        m_constant_shadow = true;
+    }
+}
+
+void Material::local_terms_are_constant() {
+    if (m_kr.texture || m_kt.texture || m_emission.texture || m_opacity.texture) return;
+    // The same code as every lookup runs, once: constants give the same record bit for bit.
+    m_constant_terms = looked_up_terms(TextureLookup{});
+    m_constant = true;
 }
 
 float Material::opacity(const TextureLookup& lookup) const {
@@ -44,7 +55,7 @@ float Material::opacity(const TextureLookup& lookup) const {
     return a == a ? std::clamp(a, 0.0f, 1.0f) : 1.0f;  // a NaN alpha counts as opaque
 }
 
-SurfaceTerms Material::terms(const TextureLookup& lookup) const {
+SurfaceTerms Material::looked_up_terms(const TextureLookup& lookup) const {
     SurfaceTerms t;
     local_terms(lookup, t);
     t.kr = eval(m_kr, lookup);
@@ -65,7 +76,7 @@ SurfaceTerms Material::terms(const TextureLookup& lookup) const {
     return t;
 }
 
-RGB Material::shadow_transmittance(const TextureLookup& lookup) const {
+RGB Material::looked_up_shadow_transmittance(const TextureLookup& lookup) const {
     if (!m_transmits) return RGB(0.0f);
     const float a = opacity(lookup);
     RGB kt = eval(m_kt, lookup);

@@ -29,7 +29,10 @@ public:
           m_rd(std::move(rd)),
           m_rs(std::move(rs)),
           m_nu(std::move(nu), 0.0f, kMaxExponent, 0.0f),
-          m_nv(std::move(nv), 0.0f, kMaxExponent, 0.0f) {}
+          m_nv(std::move(nv), 0.0f, kMaxExponent, 0.0f) {
+        if (m_rd.is_constant() && m_rs.is_constant() && m_nu.is_constant() && m_nv.is_constant())
+            local_terms_are_constant();
+    }
 
     RGB direct(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, Convention c) const override {
         if (!(wo.z > 0.0f && wi.z > 0.0f)) return {};

@@ -41,7 +41,9 @@ public:
           m_ks(std::move(ks)),
           m_roughness(std::move(roughness), 0.0f, 1.0f, 1.0f),  // a NaN roughness is matte, never a spike
           m_model(model),
-          m_fresnel(fresnel) {}
+          m_fresnel(fresnel) {
+        if (m_kd.is_constant() && m_ks.is_constant() && m_roughness.is_constant()) local_terms_are_constant();
+    }
 
     RGB direct(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, Convention c) const override {
         if (!(wo.z > 0.0f && wi.z > 0.0f)) return {};

@@ -15,7 +15,7 @@ namespace rtlab::shading_detail {
 namespace {
 class GlassMaterial final : public Material {
 public:
-    explicit GlassMaterial(Whitted w) : Material(std::move(w)) {}
+    explicit GlassMaterial(Whitted w) : Material(std::move(w)) { local_terms_are_constant(); }
     RGB direct(const SurfaceTerms&, const Vec3&, const Vec3&, Convention) const override { return {}; }
     bool reflects_direct_light() const override { return false; }
 

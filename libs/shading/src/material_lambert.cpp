@@ -15,7 +15,9 @@ namespace {
 class LambertMaterial final : public Material {
 public:
     LambertMaterial(Whitted w, std::shared_ptr<const Texture> albedo)
-        : Material(std::move(w)), m_albedo(std::move(albedo)) {}
+        : Material(std::move(w)), m_albedo(std::move(albedo)) {
+        if (m_albedo.is_constant()) local_terms_are_constant();
+    }
 
     RGB direct(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, Convention c) const override {
         if (!(wo.z > 0.0f && wi.z > 0.0f)) return {};

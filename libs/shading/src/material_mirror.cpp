@@ -11,7 +11,7 @@ namespace rtlab::shading_detail {
 namespace {
 class MirrorMaterial final : public Material {
 public:
-    explicit MirrorMaterial(Whitted w) : Material(std::move(w)) {}
+    explicit MirrorMaterial(Whitted w) : Material(std::move(w)) { local_terms_are_constant(); }
     RGB direct(const SurfaceTerms&, const Vec3&, const Vec3&, Convention) const override { return {}; }
     bool reflects_direct_light() const override { return false; }
 

@@ -24,7 +24,9 @@ public:
         : Material(std::move(w)),
           m_kd(std::move(kd)),
           m_ks(std::move(ks)),
-          m_exponent(std::move(exponent), 0.0f, kMaxExponent, 0.0f) {}
+          m_exponent(std::move(exponent), 0.0f, kMaxExponent, 0.0f) {
+        if (m_kd.is_constant() && m_ks.is_constant() && m_exponent.is_constant()) local_terms_are_constant();
+    }
 
     RGB direct(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, Convention c) const override {
         if (!(wo.z > 0.0f && wi.z > 0.0f)) return {};

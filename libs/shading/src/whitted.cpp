@@ -60,13 +60,16 @@ RGB WhittedIntegrator::transmittance(const SurfaceHit& from, const LightSample& 
     };
     Ray ray = segment(from);
     ++stats.shadow;
-    if (m_scene.occluded(ray)) return {};
     RGB through(1.0f);
     Point3 last = from.point;  // distances between the hit points themselves, free of the spawn offsets
-    for (int i = 0; i < m_options.max_crossings; ++i) {
+    // The first segment spans the whole way to the light, so it alone asks about opaque casters; the later
+    // ones start at a transmissive surface crossed on it.
+    for (int i = 0;; ++i) {
         SurfaceHit h;
-        if (!m_scene.intersect_transmissive(ray, h)) return through;
-        const SurfaceInfo info = m_scene.surface(h);
+        SurfaceInfo info;
+        const ShadowHit met = m_scene.shadow(ray, i == 0, h, info);
+        if (met == ShadowHit::opaque) return {};
+        if (met == ShadowHit::clear || i >= m_options.max_crossings) return through;
         TextureLookup q;
         q.uv = h.uv;
         q.point = h.object_point;  // solid textures in object space, also through instances
@@ -83,8 +86,8 @@ RGB WhittedIntegrator::transmittance(const SurfaceHit& from, const LightSample& 
         if (through.is_black()) return through;
         ray = segment(h);
         ++stats.shadow;
+        if (i + 1 >= m_options.max_crossings) return through;
     }
-    return through;
 }
 
 RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, int crossings, float weight,
@@ -92,8 +95,8 @@ RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, in
     const float dlen = glm::length(ray.direction);
     if (!(dlen > 0.0f) || !std::isfinite(dlen)) return {};
     SurfaceHit hit;
-    if (!m_scene.intersect(ray, hit)) return escaped(ray);
-    const SurfaceInfo info = m_scene.surface(hit);
+    SurfaceInfo info;
+    if (!m_scene.intersect_surface(ray, hit, info)) return escaped(ray);
     const Material& material = *info.material;
     const Vec3 d = ray.direction / dlen;
     const Vec3 wo = -d;

@@ -15,6 +15,7 @@
 #include "texture_params.hpp"
 
 #include <cmath>
+#include <cstdint>
 
 namespace rtlab::detail {
 
@@ -28,12 +29,22 @@ public:
     RGB eval(const TextureLookup& q) const override {
         const double i = std::floor(static_cast<double>(q.uv.x) * m_tiles_u);
         const double j = std::floor(static_cast<double>(q.uv.y) * m_tiles_v);
-        // fmod keeps the parity exact for any size; non-finite uv gives NaN, which compares unequal: even.
-        const bool odd = std::abs(std::fmod(i, 2.0)) + std::abs(std::fmod(j, 2.0)) == 1.0;
+        // Non-finite uv gives no parity, which counts as even.
+        const int pi = parity(i), pj = parity(j);
+        const bool odd = pi >= 0 && pj >= 0 && pi + pj == 1;
         return (odd ? m_odd : m_even)->eval(q);
     }
 
 private:
+    /// |fmod(x, 2)| of an integral x (0 or 1), -1 for a non-finite one. Integers of 2^53 and beyond are all
+    /// even doubles; below, the conversion is exact and the low bit is the parity (two's complement keeps it
+    /// for negatives). The same answer as fmod, without its cost on every hit of a board.
+    static int parity(double x) {
+        if (!std::isfinite(x)) return -1;
+        if (!(std::abs(x) < 0x1p53)) return 0;
+        return static_cast<int>(static_cast<std::int64_t>(x) & 1);
+    }
+
     double m_tiles_u, m_tiles_v;
     std::shared_ptr<const Texture> m_even, m_odd;
 };

@@ -17,6 +17,7 @@ private:
     bool hit_params(const Ray& ray, float& t, float& alpha, float& beta) const;
     Point3 m_corner;
     Vec3 m_u, m_v, m_normal, m_w;  // m_w = n / (n . n), for the plane coordinates
+    Vec3 m_tangent;                // every hit's unit tangent
 };
 
 }  // namespace rtlab

@@ -29,6 +29,10 @@ public:
     /// The record intersect() would give for the hit intersect_distance() found at t on this ray; the default
     /// runs intersect() again with tmax just above t.
     virtual void complete_hit(const Ray& ray, float t, SurfaceHit& hit) const;
+    /// complete_hit() for a caller that never reads hit.uv (a surface whose material has no textures): a shape
+    /// whose uv is costly may leave it at its default; every other field is complete_hit()'s, bit for bit.
+    /// The default is complete_hit().
+    virtual void complete_hit_without_uv(const Ray& ray, float t, SurfaceHit& hit) const { complete_hit(ray, t, hit); }
 };
 
 }  // namespace rtlab

@@ -57,6 +57,9 @@ public:
     bool intersect_transmissive(const Ray& ray, SurfaceHit& hit) const override;
     /// Throws rtlab::Error for a hit on a shape that is not one of the scene's objects.
     SurfaceInfo surface(const SurfaceHit& hit) const override;
+    /// A list's hit knows its object: no search by shape. Spheres of materials without textures skip their uv.
+    bool intersect_surface(const Ray& ray, SurfaceHit& hit, SurfaceInfo& info) const override;
+    ShadowHit shadow(const Ray& ray, bool check_opaque, SurfaceHit& hit, SurfaceInfo& info) const override;
 
     /// What answers intersect(): "list" or "kd-tree", for the statistics.
     std::string_view structure() const;
@@ -70,6 +73,8 @@ public:
     class Set;  // a list or a kd-tree over some of the objects (scene.cpp)
 
 private:
+    SurfaceInfo info(std::size_t object, const SurfaceHit& hit) const;
+
     std::vector<SceneObject> m_objects;
     std::vector<std::pair<const Shape*, std::size_t>> m_index;  // sorted by shape, for surface()
     AABB m_bounds;

@@ -52,7 +52,13 @@ public:
 
     /// Every texture looked up for one hit. lookup.point is the object-space point, lookup.direction the
     /// ray's direction.
-    SurfaceTerms terms(const TextureLookup& lookup) const;
+    SurfaceTerms terms(const TextureLookup& lookup) const {
+        if (m_constant) return m_constant_terms;
+        return looked_up_terms(lookup);
+    }
+    /// Whether terms() or shadow_transmittance() read their lookup: false when every term is a constant, so a
+    /// caller may leave out what only textures need (a sphere's uv costs an atan2 and an acos per hit).
+    bool reads_lookup() const { return !m_constant; }
 
     /// What multiplies the light arriving from wi (see Convention): f(wo, wi) cos(theta_i) when physical.
     /// wo and wi are unit vectors in the local shading frame (normal = +z), on the viewer's side; black when
@@ -62,7 +68,10 @@ public:
     virtual bool reflects_direct_light() const { return true; }
 
     /// The fraction of light a shadow ray keeps crossing this surface: (1 - opacity) + opacity kt.
-    RGB shadow_transmittance(const TextureLookup& lookup) const;
+    RGB shadow_transmittance(const TextureLookup& lookup) const {
+        if (m_constant_shadow) return m_shadow;
+        return looked_up_shadow_transmittance(lookup);
+    }
     /// Whether a shadow ray can cross this surface at all (kt not constant 0, or opacity not constant 1).
     bool transmits_shadows() const { return m_transmits; }
 
@@ -74,6 +83,11 @@ public:
 protected:
     /// The model's own textures (diffuse, specular, shape numbers) for one hit.
     virtual void local_terms(const TextureLookup& lookup, SurfaceTerms& terms) const = 0;
+    /// A model whose own terms are all constants calls this at the end of its constructor (where
+    /// local_terms() is already its own): when the Whitted terms are constants too, terms() then returns
+    /// one record worked out here, with no lookup and no virtual call per hit. A model that does not call it
+    /// (a plugin's) keeps looking its terms up on every hit.
+    void local_terms_are_constant();
 
 private:
     /// A Whitted term with its value when constant, so constant terms cost no virtual call per hit.
@@ -84,10 +98,16 @@ private:
     static Term make_term(const std::shared_ptr<const Texture>& texture, const RGB& fallback);
     static RGB eval(const Term& term, const TextureLookup& lookup);
     float opacity(const TextureLookup& lookup) const;
+    SurfaceTerms looked_up_terms(const TextureLookup& lookup) const;
+    RGB looked_up_shadow_transmittance(const TextureLookup& lookup) const;
 
     Whitted m_whitted;
     Term m_kr, m_kt, m_emission, m_opacity;
     bool m_transmits = false;
+    bool m_constant = false;         // terms() is m_constant_terms, whatever the lookup
+    bool m_constant_shadow = false;  // shadow_transmittance() is m_shadow, whatever the lookup
+    SurfaceTerms m_constant_terms;
+    RGB m_shadow;
 };
 
 using MaterialRegistry = Registry<Material>;

@@ -22,6 +22,9 @@ struct SurfaceInfo {
     SurfaceFlags flags;
 };
 
+/// \brief What a shadow segment meets first (SceneQuery::shadow).
+enum class ShadowHit { clear, opaque, transmissive };
+
 /// \brief The scene as the shading library sees it; render implements it over its acceleration structures.
 ///
 /// Shadow casters split in two: opaque ones (material->transmits_shadows() false) answer occluded(), the
@@ -38,6 +41,14 @@ public:
     virtual bool intersect_transmissive(const Ray& ray, SurfaceHit& hit) const = 0;
     /// The material and flags of the object hit.shape belongs to (hit.shape is the outermost shape).
     virtual SurfaceInfo surface(const SurfaceHit& hit) const = 0;
+
+    /// intersect() and surface() in one query, for shading. The record may leave out the uv of an object
+    /// whose material does not read_lookup() (nothing reads it there). The default runs the two queries.
+    virtual bool intersect_surface(const Ray& ray, SurfaceHit& hit, SurfaceInfo& info) const;
+    /// One query per shadow-ray segment: with check_opaque, `opaque` when occluded(); else the closest
+    /// transmissive caster (intersect_transmissive(), its uv left out as for intersect_surface()) with its
+    /// info, or `clear`. The default runs the three queries.
+    virtual ShadowHit shadow(const Ray& ray, bool check_opaque, SurfaceHit& hit, SurfaceInfo& info) const;
 };
 
 /// \brief Shapes with their materials, every query by brute force: tests, and the "plain list" scene level.
