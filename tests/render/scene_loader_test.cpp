@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 using namespace rtlab;
@@ -194,4 +196,24 @@ TEST_CASE("scene loader: a fallback stands in only for files that are missing", 
     REQUIRE(scene.warnings.size() == 1);
     CHECK_THAT(scene.warnings[0],
                Catch::Contains("/textures/0: file 'nowhere.png' not found") && Catch::Contains("using its fallback"));
+}
+
+TEST_CASE("scene loader: a mesh file's warnings reach the scene's warnings with the shape's position", "[scene]") {
+    const auto obj = std::filesystem::temp_directory_path() / "rtlab_scene_loader_short_face.obj";
+    {
+        std::ofstream out(obj);
+        out << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2\n";
+    }
+    const std::string text = R"({"version": 1,
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "render": {"width": 8, "height": 6},
+      "materials": [{"name": "m", "type": "lambert"}],
+      "shapes": [{"type": "mesh", "filename": ")" +
+                             obj.string() + R"(", "material": "m"}]})";
+    const LoadedScene scene = parse_scene(text, "t.json");
+    std::filesystem::remove(obj);
+    for (const auto& w : scene.warnings) UNSCOPED_INFO(w);
+    REQUIRE(scene.warnings.size() == 1);
+    CHECK_THAT(scene.warnings[0], Catch::StartsWith("t.json:5:") && Catch::Contains("/shapes/0: ") &&
+                                      Catch::Contains("fewer than 3 corners") && Catch::Contains("line 5"));
 }

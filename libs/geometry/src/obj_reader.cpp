@@ -269,7 +269,8 @@ TriangleMesh load_obj(const std::filesystem::path& path, MeshLoadInfo* info) {
     while (start < warning.size()) {
         const std::size_t stop = warning.find('\n', start);
         const std::string line = warning.substr(start, stop == std::string::npos ? std::string::npos : stop - start);
-        if (!line.empty()) out.warnings.push_back(line);
+        // tinyobjloader's "Degenerated face found\n." is the short faces that the count below names by line.
+        if (!line.empty() && line != "." && line != "Degenerated face found") out.warnings.push_back(line);
         if (stop == std::string::npos) break;
         start = stop + 1;
     }

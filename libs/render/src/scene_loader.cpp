@@ -411,6 +411,7 @@ private:
             ok = convert(kind, *type, key, value, pointer_append(p, key), params) && ok;
         }
         if (!ok) return nullptr;
+        params.set_warning_sink([this, p](const std::string& message) { warn(p, message); });
         try {
             auto object = registry.create(*type, std::move(params));
             if (!object) error(p, std::string(kind_name(kind)) + " type '" + *type + "' made nothing");
@@ -549,10 +550,14 @@ private:
         extra.set_object<Texture>("bake", fallback);
         if (size.has("bake_size")) extra.set("bake_size", *size.get_value("bake_size"));
         for (const auto& key : kFileKeys) loader_keys.push_back(key);
-        const std::string pos = m_diag.position(p);
-        m_out.warnings.push_back(m_diag.file() + (pos.empty() ? "" : ":" + pos) + ": " + p + ": " + *missing +
-                                 "; using its fallback");
+        warn(p, *missing + "; using its fallback");
         return true;
+    }
+
+    // A non-fatal problem at JSON pointer p, named by file and position like the errors.
+    void warn(const std::string& p, const std::string& message) {
+        const std::string pos = m_diag.position(p);
+        m_out.warnings.push_back(m_diag.file() + (pos.empty() ? "" : ":" + pos) + ": " + p + ": " + message);
     }
 
     // What is missing of an image or cubemap texture's files, or nullopt when everything is found.

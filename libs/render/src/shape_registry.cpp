@@ -126,7 +126,9 @@ void register_builtins(ShapeRegistry& r) {
                                               "kd-three-way", "bvh", "octree", "brute"});
             const bool smooth = p.get_bool("smooth_normals", false);
             const float fit = p.has("fit") ? positive_float(p, "fit", 1.0f) : 0.0f;  // 0: as in the file
-            TriangleMesh loaded = load_mesh(file);
+            MeshLoadInfo info;
+            TriangleMesh loaded = load_mesh(file, &info);
+            for (const auto& warning : info.warnings) p.warn(warning);
             if (smooth) loaded = with_smooth_normals(std::move(loaded));
             auto mesh = std::make_shared<TriangleMesh>(std::move(loaded));
             if (mesh->triangle_count() == 0) throw Error(p.context() + ": '" + file + "' has no triangles");

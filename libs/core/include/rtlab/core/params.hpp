@@ -5,6 +5,7 @@
 #include <rtlab/core/math.hpp>
 
 #include <any>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -73,6 +74,13 @@ public:
     /// Throws rtlab::Error naming every parameter that no getter has read.
     void check_all_used() const;
 
+    /// Where a factory's non-fatal notes go (a mesh file's dropped faces, say): a scene loader sets it so
+    /// that they reach the user beside the file's position; by default they go nowhere.
+    void set_warning_sink(std::function<void(const std::string&)> sink) { m_warn = std::move(sink); }
+    void warn(const std::string& message) const {
+        if (m_warn) m_warn(message);
+    }
+
 private:
     const Value* find(std::string_view name) const;
     const Value& require(std::string_view name) const;
@@ -81,6 +89,7 @@ private:
     std::map<std::string, Value, std::less<>> m_values;
     mutable std::set<std::string, std::less<>> m_used;
     std::string m_context = "object";
+    std::function<void(const std::string&)> m_warn;
 };
 
 }  // namespace rtlab
