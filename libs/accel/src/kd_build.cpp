@@ -32,14 +32,30 @@ constexpr std::size_t kParallelThreshold = 4096;
 constexpr std::size_t kNaiveWarnSize = 20000;
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
+constexpr std::uint32_t kAbove = 1u << 31;
+
 /// \brief A node's primitives split between its children, in the node's order. A primitive lying wholly on
-/// one side keeps its box there, and its slot on that side is recorded (kNone elsewhere); one straddling
-/// the plane goes, clipped, to each side its clipped box is not empty on, and is listed in `*_clipped`.
+/// one side keeps its box there, and `moved` records its slot on that side (with kAbove set for the
+/// upper side); one straddling the plane goes, clipped, to each side its clipped box is not empty on, is
+/// kNone in `moved` and is listed in `*_clipped`.
 struct Partition {
     std::vector<kd::Prim> below, above;
-    std::vector<std::uint32_t> below_slot, above_slot;        // by the node's slot
+    std::vector<std::uint32_t> moved;                         // by the node's slot
     std::vector<std::uint32_t> below_clipped, above_clipped;  // slots in below / above
 };
+
+/// Merges sorted `added` into sorted `kept` in place, from the back (kept's capacity should already hold
+/// both: no second buffer per node).
+void merge_into(std::vector<kd::Event>& kept, const std::vector<kd::Event>& added) {
+    std::size_t i = kept.size(), j = added.size(), k = i + j;
+    kept.resize(k);
+    while (j > 0) {
+        if (i > 0 && added[j - 1] < kept[i - 1])
+            kept[--k] = kept[--i];
+        else
+            kept[--k] = added[--j];
+    }
+}
 
 /// \brief kd-sah: the split events are sorted once at the root and stay sorted on the way down; a node's
 /// state is its events.
@@ -58,8 +74,8 @@ struct SahStrategy {
     kd::Split choose(const std::vector<kd::Prim>& prims, const State& events, const AABB& box, int) const {
         return kd::sweep_sah(events, prims.size(), box, cost);
     }
-    /// The children's events: a stable filter of the parent's keeps their order; only the clipped
-    /// primitives get new events, which are sorted among themselves and merged in.
+    /// The children's events: a filter of the parent's keeps their order; only the clipped primitives get
+    /// new events, which are sorted among themselves and merged in.
     std::pair<State, State> child_states(State events, const Partition& part) const {
         State below_new, above_new;
         for (std::uint32_t slot : part.below_clipped) kd::add_events(part.below[slot].box, slot, below_new);
@@ -67,21 +83,23 @@ struct SahStrategy {
         kd::sort_events(below_new);
         kd::sort_events(above_new);
         State below_events, above_events;
+        const std::uint32_t* moved = part.moved.data();
         for (int axis = 0; axis < 3; ++axis) {
-            std::vector<kd::Event> b, a;
-            b.reserve(2 * (part.below.size() - part.below_clipped.size()));
-            a.reserve(2 * (part.above.size() - part.above_clipped.size()));
+            std::vector<kd::Event>& b = below_events[axis];
+            std::vector<kd::Event>& a = above_events[axis];
+            b.reserve(2 * (part.below.size() - part.below_clipped.size()) + below_new[axis].size());
+            a.reserve(2 * (part.above.size() - part.above_clipped.size()) + above_new[axis].size());
             for (const kd::Event& e : events[axis]) {
-                if (part.below_slot[e.slot] != kNone)
-                    b.push_back({e.position, e.type, part.below_slot[e.slot]});
-                else if (part.above_slot[e.slot] != kNone)
-                    a.push_back({e.position, e.type, part.above_slot[e.slot]});
+                const std::uint32_t m = moved[e.slot()];
+                if (m == kNone) continue;
+                if (m & kAbove)
+                    a.push_back(e.with_slot(m & ~kAbove));
+                else
+                    b.push_back(e.with_slot(m));
             }
             std::vector<kd::Event>().swap(events[axis]);
-            below_events[axis].resize(b.size() + below_new[axis].size());
-            std::merge(b.begin(), b.end(), below_new[axis].begin(), below_new[axis].end(), below_events[axis].begin());
-            above_events[axis].resize(a.size() + above_new[axis].size());
-            std::merge(a.begin(), a.end(), above_new[axis].begin(), above_new[axis].end(), above_events[axis].begin());
+            merge_into(b, below_new[axis]);
+            merge_into(a, above_new[axis]);
         }
         return {std::move(below_events), std::move(above_events)};
     }
@@ -183,25 +201,43 @@ private:
     // they lie on, or clipped to both.
     Partition partition(const std::vector<kd::Prim>& prims, const kd::Split& s, const AABB& below_box,
                         const AABB& above_box) const {
+        enum Side : std::uint8_t { kBelow, kAboveSide, kBoth };
+        auto side = [&s](const kd::Prim& p) {
+            const float lo = p.box.lo[s.axis], hi = p.box.hi[s.axis];
+            const bool planar = lo == s.position && hi == s.position;
+            if (planar ? s.planar_left : hi <= s.position) return kBelow;
+            if (planar || lo >= s.position) return kAboveSide;
+            return kBoth;
+        };
+        // Counted first, so that each list is allocated once at its final size.
+        std::size_t counts[3] = {0, 0, 0};
+        for (const kd::Prim& p : prims) ++counts[side(p)];
         Partition part;
-        part.below_slot.assign(prims.size(), kNone);
-        part.above_slot.assign(prims.size(), kNone);
-        auto add = [](std::vector<kd::Prim>& side, const kd::Prim& p) {
-            side.push_back(p);
-            return static_cast<std::uint32_t>(side.size() - 1);
+        part.below.reserve(counts[kBelow] + counts[kBoth]);
+        part.above.reserve(counts[kAboveSide] + counts[kBoth]);
+        part.below_clipped.reserve(counts[kBoth]);
+        part.above_clipped.reserve(counts[kBoth]);
+        part.moved.resize(prims.size());
+        auto add = [](std::vector<kd::Prim>& list, const kd::Prim& p) {
+            list.push_back(p);
+            return static_cast<std::uint32_t>(list.size() - 1);
         };
         for (std::size_t i = 0; i < prims.size(); ++i) {
             const kd::Prim& p = prims[i];
-            const float lo = p.box.lo[s.axis], hi = p.box.hi[s.axis];
-            const bool planar = lo == s.position && hi == s.position;
-            if (planar ? s.planar_left : hi <= s.position) {
-                part.below_slot[i] = add(part.below, p);
-            } else if (planar || lo >= s.position) {
-                part.above_slot[i] = add(part.above, p);
-            } else {
-                const AABB b = clip(p, below_box), a = clip(p, above_box);
-                if (!b.is_empty()) part.below_clipped.push_back(add(part.below, {p.index, b}));
-                if (!a.is_empty()) part.above_clipped.push_back(add(part.above, {p.index, a}));
+            switch (side(p)) {
+                case kBelow:
+                    part.moved[i] = add(part.below, p);
+                    break;
+                case kAboveSide:
+                    part.moved[i] = add(part.above, p) | kAbove;
+                    break;
+                case kBoth: {
+                    part.moved[i] = kNone;
+                    const AABB b = clip(p, below_box), a = clip(p, above_box);
+                    if (!b.is_empty()) part.below_clipped.push_back(add(part.below, {p.index, b}));
+                    if (!a.is_empty()) part.above_clipped.push_back(add(part.above, {p.index, a}));
+                    break;
+                }
             }
         }
         return part;
@@ -297,6 +333,8 @@ KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const K
         prims.push_back({static_cast<std::uint32_t>(i), b});
         out.bounds.expand(b);
     }
+    if (prims.size() >= kd::Event::kMaxSlots)
+        throw Error("kd-tree: " + std::to_string(prims.size()) + " primitives; at most 2^30 are supported");
     if (strategy == KdStrategy::sah_naive && prims.size() > kNaiveWarnSize)
         out.stats.warnings.push_back("kd-sah-naive costs O(N^2) per node; " + std::to_string(prims.size()) +
                                      " primitives took a long time (kd-sah builds the same kind of tree fast)");

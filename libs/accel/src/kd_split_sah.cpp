@@ -27,24 +27,30 @@ Split sweep_sah(const std::array<std::vector<Event>, 3>& events, std::size_t n, 
     Split best;
     best.cost = cost.leaf_cost(n);
     if (!(box.surface_area() > 0.0f)) return {};
+    const AreaRatios ratios(box);
     for (int axis = 0; axis < 3; ++axis) {
-        if (!(box.hi[axis] > box.lo[axis])) continue;
-        const std::vector<Event>& ev = events[axis];
+        const float lo = box.lo[axis], hi = box.hi[axis];
+        if (!(hi > lo)) continue;
+        const Event* ev = events[axis].data();
+        const std::size_t size = events[axis].size();
         std::size_t n_left = 0, n_right = n;
-        for (std::size_t i = 0; i < ev.size();) {
+        for (std::size_t i = 0; i < size;) {
             const float position = ev[i].position;
             std::size_t ending = 0, planar = 0, starting = 0;
-            while (i < ev.size() && ev[i].position == position && ev[i].type == kEnd) ++ending, ++i;
-            while (i < ev.size() && ev[i].position == position && ev[i].type == kPlanar) ++planar, ++i;
-            while (i < ev.size() && ev[i].position == position && ev[i].type == kStart) ++starting, ++i;
+            while (i < size && ev[i].position == position && ev[i].type() == kEnd) ++ending, ++i;
+            while (i < size && ev[i].position == position && ev[i].type() == kPlanar) ++planar, ++i;
+            while (i < size && ev[i].position == position && ev[i].type() == kStart) ++starting, ++i;
             n_right -= planar + ending;
-            if (position > box.lo[axis] && position < box.hi[axis]) {
+            if (position > lo && position < hi) {
                 float p_left, p_right;
-                area_ratios(box, axis, position, p_left, p_right);
+                ratios(axis, position, p_left, p_right);
                 const float with_left = cost.split_cost(p_left, p_right, n_left + planar, n_right);
-                const float with_right = cost.split_cost(p_left, p_right, n_left, n_right + planar);
                 if (with_left < best.cost) best = {axis, position, true, with_left};
-                if (with_right < best.cost) best = {axis, position, false, with_right};
+                // Without planar primitives both placements cost the same: the left one already won or lost.
+                if (planar > 0) {
+                    const float with_right = cost.split_cost(p_left, p_right, n_left, n_right + planar);
+                    if (with_right < best.cost) best = {axis, position, false, with_right};
+                }
             }
             n_left += starting + planar;
         }
