@@ -34,27 +34,57 @@ constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
 constexpr std::uint32_t kAbove = 1u << 31;
 
+/// \brief Per-thread lists a node's split needs only until its children's lists are made (before any
+/// recursion or wait, so on one thread): kept between nodes, so that they are allocated a few times per
+/// thread rather than once per node.
+struct Scratch {
+    std::vector<std::uint32_t> moved;                         // by the node's slot, see Partition
+    std::vector<std::uint32_t> below_clipped, above_clipped;  // slots in Partition::below / above
+    std::array<std::vector<kd::Event>, 3> below_new, above_new;
+};
+
+Scratch& thread_scratch() {
+    thread_local Scratch scratch;
+    return scratch;
+}
+
 /// \brief A node's primitives split between its children, in the node's order. A primitive lying wholly on
 /// one side keeps its box there, and `moved` records its slot on that side (with kAbove set for the
 /// upper side); one straddling the plane goes, clipped, to each side its clipped box is not empty on, is
-/// kNone in `moved` and is listed in `*_clipped`.
+/// kNone in `moved` and is listed in `*_clipped`. `moved` and `*_clipped` are the thread's scratch lists.
 struct Partition {
     std::vector<kd::Prim> below, above;
-    std::vector<std::uint32_t> moved;                         // by the node's slot
-    std::vector<std::uint32_t> below_clipped, above_clipped;  // slots in below / above
+    const std::vector<std::uint32_t>& moved;
+    const std::vector<std::uint32_t>& below_clipped;
+    const std::vector<std::uint32_t>& above_clipped;
 };
 
-/// Merges sorted `added` into sorted `kept` in place, from the back (kept's capacity should already hold
-/// both: no second buffer per node).
-void merge_into(std::vector<kd::Event>& kept, const std::vector<kd::Event>& added) {
-    std::size_t i = kept.size(), j = added.size(), k = i + j;
-    kept.resize(k);
-    while (j > 0) {
-        if (i > 0 && added[j - 1] < kept[i - 1])
-            kept[--k] = kept[--i];
-        else
-            kept[--k] = added[--j];
+/// Copies the events of `from` whose primitive goes to one side into `below` or `above`, renumbered to
+/// the side's slots, and merges in the sides' new (sorted) events on the way -- one pass, no second buffer.
+void filter_and_merge(const std::vector<kd::Event>& from, const std::uint32_t* moved,
+                      const std::vector<kd::Event>& below_new, const std::vector<kd::Event>& above_new,
+                      std::vector<kd::Event>& below, std::vector<kd::Event>& above) {
+    kd::Event* out_b = below.data();
+    kd::Event* out_a = above.data();
+    const kd::Event *nb = below_new.data(), *nb_end = nb + below_new.size();
+    const kd::Event *na = above_new.data(), *na_end = na + above_new.size();
+    for (const kd::Event& e : from) {
+        const std::uint32_t m = moved[e.slot()];
+        if (m == kNone) continue;
+        if (m & kAbove) {
+            const kd::Event x = e.with_slot(m & ~kAbove);
+            while (na != na_end && *na < x) *out_a++ = *na++;
+            *out_a++ = x;
+        } else {
+            const kd::Event x = e.with_slot(m);
+            while (nb != nb_end && *nb < x) *out_b++ = *nb++;
+            *out_b++ = x;
+        }
     }
+    out_b = std::copy(nb, nb_end, out_b);
+    out_a = std::copy(na, na_end, out_a);
+    below.resize(static_cast<std::size_t>(out_b - below.data()));
+    above.resize(static_cast<std::size_t>(out_a - above.data()));
 }
 
 /// \brief kd-sah: the split events are sorted once at the root and stay sorted on the way down; a node's
@@ -77,29 +107,27 @@ struct SahStrategy {
     /// The children's events: a filter of the parent's keeps their order; only the clipped primitives get
     /// new events, which are sorted among themselves and merged in.
     std::pair<State, State> child_states(State events, const Partition& part) const {
-        State below_new, above_new;
+        Scratch& scratch = thread_scratch();
+        State& below_new = scratch.below_new;
+        State& above_new = scratch.above_new;
+        for (int axis = 0; axis < 3; ++axis) {
+            below_new[axis].clear();
+            above_new[axis].clear();
+            below_new[axis].reserve(2 * part.below_clipped.size());
+            above_new[axis].reserve(2 * part.above_clipped.size());
+        }
         for (std::uint32_t slot : part.below_clipped) kd::add_events(part.below[slot].box, slot, below_new);
         for (std::uint32_t slot : part.above_clipped) kd::add_events(part.above[slot].box, slot, above_new);
         kd::sort_events(below_new);
         kd::sort_events(above_new);
         State below_events, above_events;
-        const std::uint32_t* moved = part.moved.data();
         for (int axis = 0; axis < 3; ++axis) {
-            std::vector<kd::Event>& b = below_events[axis];
-            std::vector<kd::Event>& a = above_events[axis];
-            b.reserve(2 * (part.below.size() - part.below_clipped.size()) + below_new[axis].size());
-            a.reserve(2 * (part.above.size() - part.above_clipped.size()) + above_new[axis].size());
-            for (const kd::Event& e : events[axis]) {
-                const std::uint32_t m = moved[e.slot()];
-                if (m == kNone) continue;
-                if (m & kAbove)
-                    a.push_back(e.with_slot(m & ~kAbove));
-                else
-                    b.push_back(e.with_slot(m));
-            }
+            // Sized for the most events the sides can get (left uninitialized), cut to size after.
+            below_events[axis].resize(2 * (part.below.size() - part.below_clipped.size()) + below_new[axis].size());
+            above_events[axis].resize(2 * (part.above.size() - part.above_clipped.size()) + above_new[axis].size());
+            filter_and_merge(events[axis], part.moved.data(), below_new[axis], above_new[axis], below_events[axis],
+                             above_events[axis]);
             std::vector<kd::Event>().swap(events[axis]);
-            merge_into(b, below_new[axis]);
-            merge_into(a, above_new[axis]);
         }
         return {std::move(below_events), std::move(above_events)};
     }
@@ -212,12 +240,13 @@ private:
         // Counted first, so that each list is allocated once at its final size.
         std::size_t counts[3] = {0, 0, 0};
         for (const kd::Prim& p : prims) ++counts[side(p)];
-        Partition part;
+        Scratch& scratch = thread_scratch();
+        scratch.moved.resize(prims.size());
+        scratch.below_clipped.clear();
+        scratch.above_clipped.clear();
+        Partition part{{}, {}, scratch.moved, scratch.below_clipped, scratch.above_clipped};
         part.below.reserve(counts[kBelow] + counts[kBoth]);
         part.above.reserve(counts[kAboveSide] + counts[kBoth]);
-        part.below_clipped.reserve(counts[kBoth]);
-        part.above_clipped.reserve(counts[kBoth]);
-        part.moved.resize(prims.size());
         auto add = [](std::vector<kd::Prim>& list, const kd::Prim& p) {
             list.push_back(p);
             return static_cast<std::uint32_t>(list.size() - 1);
@@ -226,16 +255,16 @@ private:
             const kd::Prim& p = prims[i];
             switch (side(p)) {
                 case kBelow:
-                    part.moved[i] = add(part.below, p);
+                    scratch.moved[i] = add(part.below, p);
                     break;
                 case kAboveSide:
-                    part.moved[i] = add(part.above, p) | kAbove;
+                    scratch.moved[i] = add(part.above, p) | kAbove;
                     break;
                 case kBoth: {
-                    part.moved[i] = kNone;
+                    scratch.moved[i] = kNone;
                     const AABB b = clip(p, below_box), a = clip(p, above_box);
-                    if (!b.is_empty()) part.below_clipped.push_back(add(part.below, {p.index, b}));
-                    if (!a.is_empty()) part.above_clipped.push_back(add(part.above, {p.index, a}));
+                    if (!b.is_empty()) scratch.below_clipped.push_back(add(part.below, {p.index, b}));
+                    if (!a.is_empty()) scratch.above_clipped.push_back(add(part.above, {p.index, a}));
                     break;
                 }
             }

@@ -38,6 +38,16 @@ public:
         d[axis] = m_box.hi[axis] - position;
         p_right = area(d) * m_inv;
     }
+    /// The same for an axis known at compile time: the other two extents' product is then hoisted out of
+    /// a sweep (the same product, so the same bits).
+    template <int Axis>
+    void at(float position, float& p_left, float& p_right) const {
+        Vec3 d = m_extent;
+        d[Axis] = position - m_box.lo[Axis];
+        p_left = area(d) * m_inv;
+        d[Axis] = m_box.hi[Axis] - position;
+        p_right = area(d) * m_inv;
+    }
 
 private:
     static float area(const Vec3& d) { return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x); }
@@ -58,7 +68,9 @@ struct Event {
     float position;
     std::uint32_t key;  ///< type << 30 | slot
 
-    Event() = default;
+    // Leaves the event uninitialized, also in a vector's resize: the builder sizes its lists for the most
+    // events first and writes them after.
+    Event() {}  // NOLINT(modernize-use-equals-default)
     Event(float p, EventType t, std::uint32_t slot) : position(p), key(static_cast<std::uint32_t>(t) << 30 | slot) {}
     EventType type() const { return static_cast<EventType>(key >> 30); }
     std::uint32_t slot() const { return key & kSlotMask; }

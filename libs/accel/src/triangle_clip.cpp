@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 
@@ -17,13 +19,23 @@ struct Corner {
     bool exact[3];
 };
 
+// The next float below / above f, on the bits (std::nextafter is a library call, and this runs for most
+// coordinates of most clipped triangles). f is finite or +-infinity, never NaN.
+float next_down(float f) {
+    if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
+    if (f == -std::numeric_limits<float>::infinity()) return f;
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0.0f ? bits - 1 : bits + 1);
+}
+float next_up(float f) { return -next_down(-f); }
+
 float round_down(double x) {
     const auto f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    return static_cast<double>(f) > x ? next_down(f) : f;
 }
 float round_up(double x) {
     const auto f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+    return static_cast<double>(f) < x ? next_up(f) : f;
 }
 
 }  // namespace
