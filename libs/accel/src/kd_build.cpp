@@ -6,6 +6,7 @@
 
 #include "kd_split.hpp"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
@@ -13,7 +14,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <memory>
+#include <deque>
 #include <string>
 #include <utility>
 
@@ -25,8 +26,12 @@ struct BuildNode {
     int axis = -1;  // -1: leaf
     float split = 0.0f;
     std::vector<std::uint32_t> primitives;
-    std::unique_ptr<BuildNode> below, above;
+    BuildNode *below = nullptr, *above = nullptr;
 };
+
+/// \brief The build's nodes, in one deque per thread (stable addresses): a node costs no allocation of
+/// its own, and the whole tree goes at once when the build ends.
+using NodeArena = tbb::enumerable_thread_specific<std::deque<BuildNode>>;
 
 constexpr std::size_t kParallelThreshold = 4096;
 constexpr std::size_t kNaiveWarnSize = 20000;
@@ -167,16 +172,16 @@ class Builder {
 public:
     using State = typename Strategy::State;
 
-    Builder(const KdBuildInput& input, const Strategy& strategy, int max_depth)
-        : m_input(input), m_strategy(strategy), m_max_depth(max_depth) {}
+    Builder(const KdBuildInput& input, const Strategy& strategy, int max_depth, NodeArena& arena)
+        : m_input(input), m_strategy(strategy), m_max_depth(max_depth), m_arena(arena) {}
 
-    std::unique_ptr<BuildNode> build_root(std::vector<kd::Prim> prims, const AABB& box) const {
+    const BuildNode* build_root(std::vector<kd::Prim> prims, const AABB& box) const {
         State state = m_strategy.root_state(prims);
         return build(std::move(prims), std::move(state), box, 0);
     }
 
 private:
-    std::unique_ptr<BuildNode> build(std::vector<kd::Prim> prims, State state, const AABB& box, int depth) const {
+    BuildNode* build(std::vector<kd::Prim> prims, State state, const AABB& box, int depth) const {
         const kd::Split split =
             depth < m_max_depth && !prims.empty() ? m_strategy.choose(prims, state, box, depth) : kd::Split{};
         if (split.axis < 0) return leaf(prims);
@@ -192,7 +197,7 @@ private:
         if (2 * (part.below.size() + part.above.size()) > 3 * prims.size()) return leaf(prims);
         auto [below_state, above_state] = m_strategy.child_states(std::move(state), part);
         std::vector<kd::Prim>().swap(prims);
-        auto node = std::make_unique<BuildNode>();
+        BuildNode* node = new_node();
         node->axis = split.axis;
         node->split = split.position;
         auto build_below = [&] {
@@ -213,8 +218,10 @@ private:
         return node;
     }
 
-    static std::unique_ptr<BuildNode> leaf(const std::vector<kd::Prim>& prims) {
-        auto node = std::make_unique<BuildNode>();
+    BuildNode* new_node() const { return &m_arena.local().emplace_back(); }
+
+    BuildNode* leaf(const std::vector<kd::Prim>& prims) const {
+        BuildNode* node = new_node();
         node->primitives.reserve(prims.size());
         for (const kd::Prim& p : prims) node->primitives.push_back(p.index);
         return node;
@@ -275,6 +282,7 @@ private:
     const KdBuildInput& m_input;
     Strategy m_strategy;
     int m_max_depth;
+    NodeArena& m_arena;
 };
 
 struct Flattener {
@@ -370,13 +378,14 @@ KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const K
     // A safety cap only (pbrt's 8 + 1.3 log2 N); the cost model ends the SAH strategies well before it.
     const int max_depth =
         std::min(60, 8 + static_cast<int>(std::round(1.3 * std::log2(std::max<std::size_t>(prims.size(), 1)))));
-    std::unique_ptr<BuildNode> root;
+    NodeArena arena;
+    const BuildNode* root = nullptr;
     auto run = [&] {
         if (strategy == KdStrategy::sah)
-            root = Builder(input, SahStrategy{cost}, max_depth).build_root(std::move(prims), out.bounds);
+            root = Builder(input, SahStrategy{cost}, max_depth, arena).build_root(std::move(prims), out.bounds);
         else
-            root =
-                Builder(input, PrimitiveStrategy{strategy, cost}, max_depth).build_root(std::move(prims), out.bounds);
+            root = Builder(input, PrimitiveStrategy{strategy, cost}, max_depth, arena)
+                       .build_root(std::move(prims), out.bounds);
     };
     if (threads > 0)
         tbb::task_arena(threads).execute(run);

@@ -80,8 +80,10 @@ struct Event {
         e.key = (key & ~kSlotMask) | s;
         return e;
     }
-    /// By position, then type (then slot, which only makes the order total).
-    bool operator<(const Event& o) const { return position < o.position || (position == o.position && key < o.key); }
+    /// By position, then type; the order of equal events does not matter to the sweep.
+    bool operator<(const Event& o) const {
+        return position < o.position || (position == o.position && (key >> 30) < (o.key >> 30));
+    }
 };
 /// Appends the events of one primitive box to the three axes' lists.
 void add_events(const AABB& box, std::uint32_t slot, std::array<std::vector<Event>, 3>& events);

@@ -4,6 +4,8 @@
 #include "kd_split.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 
 namespace rtlab::kd {
 
@@ -18,8 +20,61 @@ void add_events(const AABB& box, std::uint32_t slot, std::array<std::vector<Even
     }
 }
 
+namespace {
+
+// An event's order as one integer: the position's bits made monotone (with -0 taken as +0, which compares
+// equal to it), then the type.
+std::uint64_t sort_key(const Event& e) {
+    const auto bits = std::bit_cast<std::uint32_t>(e.position + 0.0f);
+    const std::uint32_t ordered = (bits & 0x80000000u) != 0 ? ~bits : bits | 0x80000000u;
+    return static_cast<std::uint64_t>(ordered) << 2 | e.type();
+}
+
+// Least-significant-digit radix sort on sort_key's 34 bits, three passes of 12, 11 and 11 bits: linear
+// where std::sort's n log n comparisons dominate the root's sort (all primitives' events).
+void radix_sort(std::vector<Event>& events) {
+    constexpr int kPasses = 3;
+    constexpr int kShift[kPasses] = {0, 12, 23};
+    constexpr std::uint32_t kMask[kPasses] = {(1u << 12) - 1, (1u << 11) - 1, (1u << 11) - 1};
+    const std::size_t n = events.size();
+    std::vector<std::uint64_t> keys(n), keys_tmp(n);
+    std::vector<Event> tmp(n);
+    std::vector<std::size_t> count[kPasses];
+    for (int p = 0; p < kPasses; ++p) count[p].assign(kMask[p] + 2, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        keys[i] = sort_key(events[i]);
+        for (int p = 0; p < kPasses; ++p) ++count[p][((keys[i] >> kShift[p]) & kMask[p]) + 1];
+    }
+    Event* from = events.data();
+    Event* to = tmp.data();
+    std::uint64_t* from_keys = keys.data();
+    std::uint64_t* to_keys = keys_tmp.data();
+    for (int p = 0; p < kPasses; ++p) {
+        std::vector<std::size_t>& offset = count[p];
+        for (std::size_t b = 1; b < offset.size(); ++b) offset[b] += offset[b - 1];
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t slot = offset[(from_keys[i] >> kShift[p]) & kMask[p]]++;
+            to[slot] = from[i];
+            to_keys[slot] = from_keys[i];
+        }
+        std::swap(from, to);
+        std::swap(from_keys, to_keys);
+    }
+    // An odd number of passes leaves the result in tmp.
+    if (from != events.data()) events.swap(tmp);
+}
+
+}  // namespace
+
 void sort_events(std::array<std::vector<Event>, 3>& events) {
-    for (auto& e : events) std::sort(e.begin(), e.end());
+    // Below a few thousand events the radix sort's buckets cost more than the comparisons they save.
+    constexpr std::size_t kRadixMin = 4096;
+    for (auto& e : events) {
+        if (e.size() >= kRadixMin)
+            radix_sort(e);
+        else
+            std::sort(e.begin(), e.end());
+    }
 }
 
 namespace {
