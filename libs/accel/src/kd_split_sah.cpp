@@ -3,6 +3,8 @@
 // side. Only straddling primitives get new (clipped) events, which are sorted among themselves and merged.
 #include "kd_split.hpp"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <bit>
 #include <cstdint>
@@ -69,12 +71,17 @@ void radix_sort(std::vector<Event>& events) {
 void sort_events(std::array<std::vector<Event>, 3>& events) {
     // Below a few thousand events the radix sort's buckets cost more than the comparisons they save.
     constexpr std::size_t kRadixMin = 4096;
-    for (auto& e : events) {
+    auto sort = [](std::vector<Event>& e) {
         if (e.size() >= kRadixMin)
             radix_sort(e);
         else
             std::sort(e.begin(), e.end());
-    }
+    };
+    // The root's sort comes before the build forks: its three axes are the only parallel work there.
+    if (events[0].size() + events[1].size() + events[2].size() >= 3 * kRadixMin)
+        tbb::parallel_invoke([&] { sort(events[0]); }, [&] { sort(events[1]); }, [&] { sort(events[2]); });
+    else
+        for (auto& e : events) sort(e);
 }
 
 namespace {
