@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <random>
 
 using namespace rtlab;
 
@@ -191,6 +193,38 @@ TEST_CASE("SAH trees stop by cost and are identical with 1 and 2 threads", "[kd]
     const KdTreeData median = build_kd_tree(input, KdStrategy::median);
     CHECK(sah.stats.sah_cost <= binned.stats.sah_cost * 1.02);
     CHECK(sah.stats.sah_cost < median.stats.sah_cost);
+}
+
+TEST_CASE("kd-sah finds the splits of the naive O(N^2) SAH on boxes enough for its radix-sorted events", "[kd]") {
+    // 2,500 boxes give 5,000 events per axis: the root's events take the radix sort, the clipped ones
+    // std::sort. A fifth of the coordinates sit at -0 or +0 (equal planes with different bits) and
+    // some at shared grid values, so the sweep's grouping of equal positions is exercised. No box is
+    // flat: there the naive SAH puts planar primitives always left and the trees may rightly differ.
+    std::mt19937 rng(7);
+    auto uniform = [&rng] { return static_cast<float>(rng() >> 8) * 0x1p-23f - 1.0f; };  // [-1, 1)
+    auto coordinate = [&](float& c) {
+        const std::uint32_t pick = rng() % 10;
+        c = pick == 0 ? -0.0f : pick == 1 ? 0.0f : pick == 2 ? std::round(c * 8.0f) / 8.0f : c;
+    };
+    KdBuildInput input;
+    while (input.bounds.size() < 2500) {
+        Point3 a(uniform(), uniform(), uniform()), b(uniform(), uniform(), uniform());
+        for (int k = 0; k < 3; ++k) {
+            coordinate(a[k]);
+            coordinate(b[k]);
+        }
+        AABB box{glm::min(a, b), glm::max(a, b)};
+        if (box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z) input.bounds.push_back(box);
+    }
+    const KdTreeData sah = build_kd_tree(input, KdStrategy::sah, {}, 1);
+    const KdTreeData naive = build_kd_tree(input, KdStrategy::sah_naive, {}, 1);
+    INFO("kd-sah: nodes " << sah.stats.nodes << ", SAH " << sah.stats.sah_cost << "; naive: nodes " << naive.stats.nodes
+                          << ", SAH " << naive.stats.sah_cost);
+    CHECK(sah.stats.nodes == naive.stats.nodes);
+    CHECK(sah.stats.max_depth == naive.stats.max_depth);
+    CHECK(sah.stats.sah_cost == Approx(naive.stats.sah_cost).epsilon(1e-6));
+    CHECK(sah.primitive_indices.size() == naive.primitive_indices.size());
+    CHECK(sah.stats.nodes > 100);
 }
 
 TEST_CASE("a kd-tree over shapes of mixed kinds, itself a shape inside another tree", "[kd]") {

@@ -6,6 +6,7 @@
 
 #include "kd_split.hpp"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
@@ -13,7 +14,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <memory>
+#include <deque>
 #include <string>
 #include <utility>
 
@@ -25,21 +26,71 @@ struct BuildNode {
     int axis = -1;  // -1: leaf
     float split = 0.0f;
     std::vector<std::uint32_t> primitives;
-    std::unique_ptr<BuildNode> below, above;
+    BuildNode *below = nullptr, *above = nullptr;
 };
+
+/// \brief The build's nodes, in one deque per thread (stable addresses): a node costs no allocation of
+/// its own, and the whole tree goes at once when the build ends.
+using NodeArena = tbb::enumerable_thread_specific<std::deque<BuildNode>>;
 
 constexpr std::size_t kParallelThreshold = 4096;
 constexpr std::size_t kNaiveWarnSize = 20000;
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
+constexpr std::uint32_t kAbove = 1u << 31;
+
+/// \brief Per-thread lists a node's split needs only until its children's lists are made (before any
+/// recursion or wait, so on one thread): kept between nodes, so that they are allocated a few times per
+/// thread rather than once per node.
+struct Scratch {
+    std::vector<std::uint32_t> moved;                         // by the node's slot, see Partition
+    std::vector<std::uint32_t> below_clipped, above_clipped;  // slots in Partition::below / above
+    std::array<std::vector<kd::Event>, 3> below_new, above_new;
+};
+
+Scratch& thread_scratch() {
+    thread_local Scratch scratch;
+    return scratch;
+}
+
 /// \brief A node's primitives split between its children, in the node's order. A primitive lying wholly on
-/// one side keeps its box there, and its slot on that side is recorded (kNone elsewhere); one straddling
-/// the plane goes, clipped, to each side its clipped box is not empty on, and is listed in `*_clipped`.
+/// one side keeps its box there, and `moved` records its slot on that side (with kAbove set for the
+/// upper side); one straddling the plane goes, clipped, to each side its clipped box is not empty on, is
+/// kNone in `moved` and is listed in `*_clipped`. `moved` and `*_clipped` are the thread's scratch lists.
 struct Partition {
     std::vector<kd::Prim> below, above;
-    std::vector<std::uint32_t> below_slot, above_slot;        // by the node's slot
-    std::vector<std::uint32_t> below_clipped, above_clipped;  // slots in below / above
+    const std::vector<std::uint32_t>& moved;
+    const std::vector<std::uint32_t>& below_clipped;
+    const std::vector<std::uint32_t>& above_clipped;
 };
+
+/// Copies the events of `from` whose primitive goes to one side into `below` or `above`, renumbered to
+/// the side's slots, and merges in the sides' new (sorted) events on the way -- one pass, no second buffer.
+void filter_and_merge(const std::vector<kd::Event>& from, const std::uint32_t* moved,
+                      const std::vector<kd::Event>& below_new, const std::vector<kd::Event>& above_new,
+                      std::vector<kd::Event>& below, std::vector<kd::Event>& above) {
+    kd::Event* out_b = below.data();
+    kd::Event* out_a = above.data();
+    const kd::Event *nb = below_new.data(), *nb_end = nb + below_new.size();
+    const kd::Event *na = above_new.data(), *na_end = na + above_new.size();
+    for (const kd::Event& e : from) {
+        const std::uint32_t m = moved[e.slot()];
+        if (m == kNone) continue;
+        if (m & kAbove) {
+            const kd::Event x = e.with_slot(m & ~kAbove);
+            while (na != na_end && *na < x) *out_a++ = *na++;
+            *out_a++ = x;
+        } else {
+            const kd::Event x = e.with_slot(m);
+            while (nb != nb_end && *nb < x) *out_b++ = *nb++;
+            *out_b++ = x;
+        }
+    }
+    out_b = std::copy(nb, nb_end, out_b);
+    out_a = std::copy(na, na_end, out_a);
+    below.resize(static_cast<std::size_t>(out_b - below.data()));
+    above.resize(static_cast<std::size_t>(out_a - above.data()));
+}
 
 /// \brief kd-sah: the split events are sorted once at the root and stay sorted on the way down; a node's
 /// state is its events.
@@ -58,30 +109,30 @@ struct SahStrategy {
     kd::Split choose(const std::vector<kd::Prim>& prims, const State& events, const AABB& box, int) const {
         return kd::sweep_sah(events, prims.size(), box, cost);
     }
-    /// The children's events: a stable filter of the parent's keeps their order; only the clipped
-    /// primitives get new events, which are sorted among themselves and merged in.
+    /// The children's events: a filter of the parent's keeps their order; only the clipped primitives get
+    /// new events, which are sorted among themselves and merged in.
     std::pair<State, State> child_states(State events, const Partition& part) const {
-        State below_new, above_new;
+        Scratch& scratch = thread_scratch();
+        State& below_new = scratch.below_new;
+        State& above_new = scratch.above_new;
+        for (int axis = 0; axis < 3; ++axis) {
+            below_new[axis].clear();
+            above_new[axis].clear();
+            below_new[axis].reserve(2 * part.below_clipped.size());
+            above_new[axis].reserve(2 * part.above_clipped.size());
+        }
         for (std::uint32_t slot : part.below_clipped) kd::add_events(part.below[slot].box, slot, below_new);
         for (std::uint32_t slot : part.above_clipped) kd::add_events(part.above[slot].box, slot, above_new);
         kd::sort_events(below_new);
         kd::sort_events(above_new);
         State below_events, above_events;
         for (int axis = 0; axis < 3; ++axis) {
-            std::vector<kd::Event> b, a;
-            b.reserve(2 * (part.below.size() - part.below_clipped.size()));
-            a.reserve(2 * (part.above.size() - part.above_clipped.size()));
-            for (const kd::Event& e : events[axis]) {
-                if (part.below_slot[e.slot] != kNone)
-                    b.push_back({e.position, e.type, part.below_slot[e.slot]});
-                else if (part.above_slot[e.slot] != kNone)
-                    a.push_back({e.position, e.type, part.above_slot[e.slot]});
-            }
+            // Sized for the most events the sides can get (left uninitialized), cut to size after.
+            below_events[axis].resize(2 * (part.below.size() - part.below_clipped.size()) + below_new[axis].size());
+            above_events[axis].resize(2 * (part.above.size() - part.above_clipped.size()) + above_new[axis].size());
+            filter_and_merge(events[axis], part.moved.data(), below_new[axis], above_new[axis], below_events[axis],
+                             above_events[axis]);
             std::vector<kd::Event>().swap(events[axis]);
-            below_events[axis].resize(b.size() + below_new[axis].size());
-            std::merge(b.begin(), b.end(), below_new[axis].begin(), below_new[axis].end(), below_events[axis].begin());
-            above_events[axis].resize(a.size() + above_new[axis].size());
-            std::merge(a.begin(), a.end(), above_new[axis].begin(), above_new[axis].end(), above_events[axis].begin());
         }
         return {std::move(below_events), std::move(above_events)};
     }
@@ -121,16 +172,16 @@ class Builder {
 public:
     using State = typename Strategy::State;
 
-    Builder(const KdBuildInput& input, const Strategy& strategy, int max_depth)
-        : m_input(input), m_strategy(strategy), m_max_depth(max_depth) {}
+    Builder(const KdBuildInput& input, const Strategy& strategy, int max_depth, NodeArena& arena)
+        : m_input(input), m_strategy(strategy), m_max_depth(max_depth), m_arena(arena) {}
 
-    std::unique_ptr<BuildNode> build_root(std::vector<kd::Prim> prims, const AABB& box) const {
+    const BuildNode* build_root(std::vector<kd::Prim> prims, const AABB& box) const {
         State state = m_strategy.root_state(prims);
         return build(std::move(prims), std::move(state), box, 0);
     }
 
 private:
-    std::unique_ptr<BuildNode> build(std::vector<kd::Prim> prims, State state, const AABB& box, int depth) const {
+    BuildNode* build(std::vector<kd::Prim> prims, State state, const AABB& box, int depth) const {
         const kd::Split split =
             depth < m_max_depth && !prims.empty() ? m_strategy.choose(prims, state, box, depth) : kd::Split{};
         if (split.axis < 0) return leaf(prims);
@@ -146,7 +197,7 @@ private:
         if (2 * (part.below.size() + part.above.size()) > 3 * prims.size()) return leaf(prims);
         auto [below_state, above_state] = m_strategy.child_states(std::move(state), part);
         std::vector<kd::Prim>().swap(prims);
-        auto node = std::make_unique<BuildNode>();
+        BuildNode* node = new_node();
         node->axis = split.axis;
         node->split = split.position;
         auto build_below = [&] {
@@ -167,8 +218,10 @@ private:
         return node;
     }
 
-    static std::unique_ptr<BuildNode> leaf(const std::vector<kd::Prim>& prims) {
-        auto node = std::make_unique<BuildNode>();
+    BuildNode* new_node() const { return &m_arena.local().emplace_back(); }
+
+    BuildNode* leaf(const std::vector<kd::Prim>& prims) const {
+        BuildNode* node = new_node();
         node->primitives.reserve(prims.size());
         for (const kd::Prim& p : prims) node->primitives.push_back(p.index);
         return node;
@@ -183,25 +236,44 @@ private:
     // they lie on, or clipped to both.
     Partition partition(const std::vector<kd::Prim>& prims, const kd::Split& s, const AABB& below_box,
                         const AABB& above_box) const {
-        Partition part;
-        part.below_slot.assign(prims.size(), kNone);
-        part.above_slot.assign(prims.size(), kNone);
-        auto add = [](std::vector<kd::Prim>& side, const kd::Prim& p) {
-            side.push_back(p);
-            return static_cast<std::uint32_t>(side.size() - 1);
+        enum Side : std::uint8_t { kBelow, kAboveSide, kBoth };
+        auto side = [&s](const kd::Prim& p) {
+            const float lo = p.box.lo[s.axis], hi = p.box.hi[s.axis];
+            const bool planar = lo == s.position && hi == s.position;
+            if (planar ? s.planar_left : hi <= s.position) return kBelow;
+            if (planar || lo >= s.position) return kAboveSide;
+            return kBoth;
+        };
+        // Counted first, so that each list is allocated once at its final size.
+        std::size_t counts[3] = {0, 0, 0};
+        for (const kd::Prim& p : prims) ++counts[side(p)];
+        Scratch& scratch = thread_scratch();
+        scratch.moved.resize(prims.size());
+        scratch.below_clipped.clear();
+        scratch.above_clipped.clear();
+        Partition part{{}, {}, scratch.moved, scratch.below_clipped, scratch.above_clipped};
+        part.below.reserve(counts[kBelow] + counts[kBoth]);
+        part.above.reserve(counts[kAboveSide] + counts[kBoth]);
+        auto add = [](std::vector<kd::Prim>& list, const kd::Prim& p) {
+            list.push_back(p);
+            return static_cast<std::uint32_t>(list.size() - 1);
         };
         for (std::size_t i = 0; i < prims.size(); ++i) {
             const kd::Prim& p = prims[i];
-            const float lo = p.box.lo[s.axis], hi = p.box.hi[s.axis];
-            const bool planar = lo == s.position && hi == s.position;
-            if (planar ? s.planar_left : hi <= s.position) {
-                part.below_slot[i] = add(part.below, p);
-            } else if (planar || lo >= s.position) {
-                part.above_slot[i] = add(part.above, p);
-            } else {
-                const AABB b = clip(p, below_box), a = clip(p, above_box);
-                if (!b.is_empty()) part.below_clipped.push_back(add(part.below, {p.index, b}));
-                if (!a.is_empty()) part.above_clipped.push_back(add(part.above, {p.index, a}));
+            switch (side(p)) {
+                case kBelow:
+                    scratch.moved[i] = add(part.below, p);
+                    break;
+                case kAboveSide:
+                    scratch.moved[i] = add(part.above, p) | kAbove;
+                    break;
+                case kBoth: {
+                    scratch.moved[i] = kNone;
+                    const AABB b = clip(p, below_box), a = clip(p, above_box);
+                    if (!b.is_empty()) scratch.below_clipped.push_back(add(part.below, {p.index, b}));
+                    if (!a.is_empty()) scratch.above_clipped.push_back(add(part.above, {p.index, a}));
+                    break;
+                }
             }
         }
         return part;
@@ -210,6 +282,7 @@ private:
     const KdBuildInput& m_input;
     Strategy m_strategy;
     int m_max_depth;
+    NodeArena& m_arena;
 };
 
 struct Flattener {
@@ -297,19 +370,22 @@ KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const K
         prims.push_back({static_cast<std::uint32_t>(i), b});
         out.bounds.expand(b);
     }
+    if (prims.size() >= kd::Event::kMaxSlots)
+        throw Error("kd-tree: " + std::to_string(prims.size()) + " primitives; at most 2^30 are supported");
     if (strategy == KdStrategy::sah_naive && prims.size() > kNaiveWarnSize)
         out.stats.warnings.push_back("kd-sah-naive costs O(N^2) per node; " + std::to_string(prims.size()) +
                                      " primitives took a long time (kd-sah builds the same kind of tree fast)");
     // A safety cap only (pbrt's 8 + 1.3 log2 N); the cost model ends the SAH strategies well before it.
     const int max_depth =
         std::min(60, 8 + static_cast<int>(std::round(1.3 * std::log2(std::max<std::size_t>(prims.size(), 1)))));
-    std::unique_ptr<BuildNode> root;
+    NodeArena arena;
+    const BuildNode* root = nullptr;
     auto run = [&] {
         if (strategy == KdStrategy::sah)
-            root = Builder(input, SahStrategy{cost}, max_depth).build_root(std::move(prims), out.bounds);
+            root = Builder(input, SahStrategy{cost}, max_depth, arena).build_root(std::move(prims), out.bounds);
         else
-            root =
-                Builder(input, PrimitiveStrategy{strategy, cost}, max_depth).build_root(std::move(prims), out.bounds);
+            root = Builder(input, PrimitiveStrategy{strategy, cost}, max_depth, arena)
+                       .build_root(std::move(prims), out.bounds);
     };
     if (threads > 0)
         tbb::task_arena(threads).execute(run);

@@ -24,25 +24,66 @@ struct Split {
     float cost = 0.0f;
 };
 
-/// Surface-area ratios of the two halves of `box` split at `position` on `axis`.
-inline void area_ratios(const AABB& box, int axis, float position, float& p_left, float& p_right) {
-    AABB left = box, right = box;
-    left.hi[axis] = position;
-    right.lo[axis] = position;
-    const float inv = 1.0f / box.surface_area();
-    p_left = left.surface_area() * inv;
-    p_right = right.surface_area() * inv;
-}
+/// \brief Surface-area ratios of the two halves of a box split on one axis, for many planes: the box's
+/// extent and inverse area are computed once per node, each plane's halves with the very float operations
+/// of AABB::surface_area, so that costs (and trees) match a direct computation bit for bit. Planes must lie
+/// strictly inside a non-empty box.
+class AreaRatios {
+public:
+    explicit AreaRatios(const AABB& box) : m_box(box), m_extent(box.extent()), m_inv(1.0f / box.surface_area()) {}
+    void operator()(int axis, float position, float& p_left, float& p_right) const {
+        Vec3 d = m_extent;
+        d[axis] = position - m_box.lo[axis];
+        p_left = area(d) * m_inv;
+        d[axis] = m_box.hi[axis] - position;
+        p_right = area(d) * m_inv;
+    }
+    /// The same for an axis known at compile time: the other two extents' product is then hoisted out of
+    /// a sweep (the same product, so the same bits).
+    template <int Axis>
+    void at(float position, float& p_left, float& p_right) const {
+        Vec3 d = m_extent;
+        d[Axis] = position - m_box.lo[Axis];
+        p_left = area(d) * m_inv;
+        d[Axis] = m_box.hi[Axis] - position;
+        p_right = area(d) * m_inv;
+    }
+
+private:
+    static float area(const Vec3& d) { return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x); }
+    AABB m_box;
+    Vec3 m_extent;
+    float m_inv;
+};
 
 /// A split event of the SAH sweep: where a primitive (slot in its node's list) starts, ends or lies flat.
 /// Sorted by position, then end < planar < start: at one position, primitives ending there leave the
 /// right side before those starting there join the left.
 enum EventType : std::uint8_t { kEnd = 0, kPlanar = 1, kStart = 2 };
+/// 8 bytes (type in the top two bits of the slot's word): the event lists are the bulk of a build's memory
+/// traffic -- filtered into the children and merged at every level.
 struct Event {
+    static constexpr std::uint32_t kSlotMask = (1u << 30) - 1;
+    static constexpr std::size_t kMaxSlots = std::size_t{1} << 30;
     float position;
-    EventType type;
-    std::uint32_t slot;
-    bool operator<(const Event& o) const { return position < o.position || (position == o.position && type < o.type); }
+    std::uint32_t key;  ///< type << 30 | slot
+
+    // Leaves the event uninitialized, also in a vector's resize: the builder sizes its lists for the most
+    // events first and writes them after.
+    Event() {}  // NOLINT(modernize-use-equals-default)
+    Event(float p, EventType t, std::uint32_t slot) : position(p), key(static_cast<std::uint32_t>(t) << 30 | slot) {}
+    EventType type() const { return static_cast<EventType>(key >> 30); }
+    std::uint32_t slot() const { return key & kSlotMask; }
+    /// The same event for slot s.
+    Event with_slot(std::uint32_t s) const {
+        Event e = *this;
+        e.key = (key & ~kSlotMask) | s;
+        return e;
+    }
+    /// By position, then type; the order of equal events does not matter to the sweep.
+    bool operator<(const Event& o) const {
+        return position < o.position || (position == o.position && (key >> 30) < (o.key >> 30));
+    }
 };
 /// Appends the events of one primitive box to the three axes' lists.
 void add_events(const AABB& box, std::uint32_t slot, std::array<std::vector<Event>, 3>& events);

@@ -12,6 +12,7 @@ Split find_split_binned(std::span<const Prim> prims, const AABB& box, const KdCo
     Split best;
     best.cost = cost.leaf_cost(prims.size());
     if (box.surface_area() <= 0.0f) return {};
+    const AreaRatios ratios(box);
     for (int axis = 0; axis < 3; ++axis) {
         const float lo = box.lo[axis], extent = box.hi[axis] - box.lo[axis];
         if (!(extent > 0.0f)) continue;
@@ -32,7 +33,7 @@ Split find_split_binned(std::span<const Prim> prims, const AABB& box, const KdCo
             const float position = lo + static_cast<float>(k) * (extent / kBins);
             if (!(position > box.lo[axis] && position < box.hi[axis])) continue;
             float p_left, p_right;
-            area_ratios(box, axis, position, p_left, p_right);
+            ratios(axis, position, p_left, p_right);
             const float c = cost.split_cost(p_left, p_right, n_left, n_right);
             if (c < best.cost) best = {axis, position, true, c};
         }

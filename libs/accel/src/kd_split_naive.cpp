@@ -8,6 +8,7 @@ Split find_split_naive(std::span<const Prim> prims, const AABB& box, const KdCos
     Split best;
     best.cost = cost.leaf_cost(prims.size());
     if (box.surface_area() <= 0.0f) return {};
+    const AreaRatios ratios(box);
     for (int axis = 0; axis < 3; ++axis) {
         for (const Prim& candidate : prims) {
             for (const float position : {candidate.box.lo[axis], candidate.box.hi[axis]}) {
@@ -19,7 +20,7 @@ Split find_split_naive(std::span<const Prim> prims, const AABB& box, const KdCos
                     if (p.box.hi[axis] > position) ++n_right;
                 }
                 float p_left, p_right;
-                area_ratios(box, axis, position, p_left, p_right);
+                ratios(axis, position, p_left, p_right);
                 const float c = cost.split_cost(p_left, p_right, n_left, n_right);
                 if (c < best.cost) best = {axis, position, true, c};
             }

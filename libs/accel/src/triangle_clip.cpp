@@ -1,8 +1,12 @@
 #include "mesh_triangles.hpp"
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
 
 namespace rtlab::accel {
 
@@ -15,13 +19,23 @@ struct Corner {
     bool exact[3];
 };
 
+// The next float below / above f, on the bits (std::nextafter is a library call, and this runs for most
+// coordinates of most clipped triangles). f is finite or +-infinity, never NaN.
+float next_down(float f) {
+    if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
+    if (f == -std::numeric_limits<float>::infinity()) return f;
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0.0f ? bits - 1 : bits + 1);
+}
+float next_up(float f) { return -next_down(-f); }
+
 float round_down(double x) {
     const auto f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    return static_cast<double>(f) > x ? next_down(f) : f;
 }
 float round_up(double x) {
     const auto f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+    return static_cast<double>(f) < x ? next_up(f) : f;
 }
 
 }  // namespace
@@ -31,7 +45,10 @@ AABB clip_triangle(const Point3& a, const Point3& b, const Point3& c, const AABB
     // rounding: a float clip may round a cut point's other coordinates inward, and a triangle reaching
     // a later split plane by an ulp is then left out of the child that a ray meets it in.
     // A triangle clipped by 6 planes has at most 9 corners.
-    std::array<Corner, 12> poly{}, next{};
+    // Two buffers used in turn (no copy of the polygon per plane).
+    std::array<Corner, 12> buffers[2];
+    Corner* poly = buffers[0].data();
+    Corner* next = buffers[1].data();
     const Point3* corners[3] = {&a, &b, &c};
     double scale = 0.0;  // bounds the coordinates' magnitude, for the error bound of the cut points
     for (int k = 0; k < 3; ++k)
@@ -45,15 +62,20 @@ AABB clip_triangle(const Point3& a, const Point3& b, const Point3& c, const AABB
         for (int side = 0; side < 2 && n > 0; ++side) {
             const double plane = side == 0 ? box.lo[axis] : box.hi[axis];
             auto inside = [&](const Corner& p) { return side == 0 ? p.x[axis] >= plane : p.x[axis] <= plane; };
+            // Most planes of a child box do not cut the triangle (only the new split plane does, in a
+            // node's straddlers): with every corner inside, the pass below would return the same polygon.
+            std::size_t in = 0;
+            for (std::size_t i = 0; i < n; ++i) in += inside(poly[i]) ? 1 : 0;
+            if (in == n) continue;
             std::size_t m = 0;
             for (std::size_t i = 0; i < n; ++i) {
                 const Corner& p = poly[i];
-                const Corner& q = poly[(i + 1) % n];
+                const Corner& q = poly[i + 1 == n ? 0 : i + 1];
                 const bool p_in = inside(p), q_in = inside(q);
                 if (p_in) next[m++] = p;
                 if (p_in != q_in) {
                     const double t = (plane - p.x[axis]) / (q.x[axis] - p.x[axis]);
-                    Corner x;
+                    Corner& x = next[m++];
                     for (int k = 0; k < 3; ++k) {
                         // An edge level in k keeps its coordinate exactly (t * 0 adds nothing).
                         x.x[k] = p.x[k] + t * (q.x[k] - p.x[k]);
@@ -61,11 +83,10 @@ AABB clip_triangle(const Point3& a, const Point3& b, const Point3& c, const AABB
                     }
                     x.x[axis] = plane;  // exactly on the plane, whatever the rounding above
                     x.exact[axis] = true;
-                    next[m++] = x;
                 }
             }
             n = m;
-            poly = next;
+            std::swap(poly, next);
         }
     }
     if (n == 0) return AABB{};
