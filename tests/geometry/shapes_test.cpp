@@ -27,6 +27,19 @@ bool misses(const Shape& s, const Ray& r) {
     SurfaceHit h;
     return !s.intersect(r, h) && !s.occluded(r);
 }
+// Every field of a hit record but uv, bit for bit.
+void check_same_hit(const SurfaceHit& a, const SurfaceHit& b) {
+    CHECK(a.t == b.t);
+    CHECK(a.point == b.point);
+    CHECK(a.point_error == b.point_error);
+    CHECK(a.object_point == b.object_point);
+    CHECK(a.geometric_normal == b.geometric_normal);
+    CHECK(a.shading_normal == b.shading_normal);
+    CHECK(a.tangent == b.tangent);
+    CHECK(a.front_face == b.front_face);
+    CHECK(a.shape == b.shape);
+}
+
 }  // namespace
 
 TEST_CASE("sphere: outside, inside, grazing and from the surface", "[shapes]") {
@@ -219,28 +232,13 @@ TEST_CASE("two-step closest hits give the one-step record bit for bit whether de
             SurfaceHit two;
             shape->complete_hit(ray, t, two);
             CHECK(t == one.t);
-            CHECK(two.t == one.t);
-            CHECK(two.point == one.point);
-            CHECK(two.point_error == one.point_error);
-            CHECK(two.geometric_normal == one.geometric_normal);
-            CHECK(two.shading_normal == one.shading_normal);
+            check_same_hit(two, one);
             CHECK(two.uv == one.uv);
-            CHECK(two.tangent == one.tangent);
-            CHECK(two.front_face == one.front_face);
-            CHECK(two.shape == one.shape);
             // Without uv: every other field the same, the uv left at its default where the shape skips it.
             SurfaceHit three;
             three.uv = Vec2(-7.0f);
             shape->complete_hit_without_uv(ray, t, three);
-            CHECK(three.t == one.t);
-            CHECK(three.point == one.point);
-            CHECK(three.point_error == one.point_error);
-            CHECK(three.object_point == one.object_point);
-            CHECK(three.geometric_normal == one.geometric_normal);
-            CHECK(three.shading_normal == one.shading_normal);
-            CHECK(three.tangent == one.tangent);
-            CHECK(three.front_face == one.front_face);
-            CHECK(three.shape == one.shape);
+            check_same_hit(three, one);
             CHECK(three.uv == (shape == &sphere ? Vec2(0.0f) : one.uv));
         }
     }
