@@ -41,6 +41,8 @@ struct SetMember {
     std::size_t object;    // index into the scene's objects
     bool defers;           // shape->defers_record(), asked once
     bool reads_uv = true;  // the object's material reads its lookup: shading needs the hit's uv
+    // The object's material reflects direct light: shading builds its frame from the hit's tangent.
+    bool reads_tangent = true;
     // The shape when it is a Sphere: its distance and shadow tests are inline, so the walk runs them without a
     // virtual call (rtlab-whitted: the list walks and sphere tests took 18% fewer instructions so).
     const Sphere* sphere = nullptr;
@@ -120,6 +122,8 @@ public:
         if (deferred) {
             if (deferred->quad)
                 deferred->quad->fill_record(ray, r.tmax, alpha, beta, hit);
+            else if (deferred->sphere && for_shading)
+                deferred->sphere->complete_hit_for(ray, r.tmax, hit, deferred->reads_uv, deferred->reads_tangent);
             else if (for_shading && !deferred->reads_uv)
                 deferred->shape->complete_hit_without_uv(ray, r.tmax, hit);
             else
@@ -168,6 +172,7 @@ Scene::Scene(std::vector<SceneObject> objects, SceneOptions options) : m_objects
                                i,
                                o.shape->defers_record(),
                                o.material->reads_lookup(),
+                               o.material->reflects_direct_light(),
                                dynamic_cast<const Sphere*>(o.shape.get()),
                                dynamic_cast<const Quad*>(o.shape.get())};
         all.push_back(member);
