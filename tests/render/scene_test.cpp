@@ -216,7 +216,7 @@ TEST_CASE("intersect_surface and shadow answer as the separate queries with uv l
     CHECK(hits > 5000);
     CHECK(unread_uv > 500);
     std::printf("shading hits without a tangent (glass): %d\n", no_tangent);
-    CHECK(no_tangent > 0);
+    CHECK(no_tangent > 100);  // 291 measured
     CHECK(textured_hits > 100);
     CHECK(opaque > 3000);
     CHECK(crossings > 300);

@@ -9,6 +9,9 @@
 #include <rtlab/core/ray.hpp>
 #include <rtlab/geometry/surface_hit.hpp>
 
+#include <bit>
+#include <cstdint>
+
 namespace rtlab {
 
 /// Shadow and connection rays end at t = 1 - kShadowEpsilon of their segment (pbrt-v4's ShadowEpsilon), so
@@ -33,6 +36,15 @@ inline Ray spawn_ray_to(const SurfaceHit& hit, const Point3& target);
 /// both ends offset off their surfaces towards each other; direction = end - origin, tmax 1 - kShadowEpsilon.
 Ray spawn_ray_to(const SurfaceHit& from, const SurfaceHit& to);
 
+/// next_float_up (std::nextafter(x, +inf)) in one compare: NaN and +inf stay, and x + 0 turns -0 into +0 (and
+/// leaves every other float as it is), which then steps like +0. Every spawned ray takes up to three.
+inline float spawn_step_up(float x) {
+    if (!(x < kInfinity)) return x;
+    const std::uint32_t bits = std::bit_cast<std::uint32_t>(x + 0.0f);
+    // Sign-magnitude: away from zero above it, towards zero below (-inf to -max).
+    return std::bit_cast<float>(bits >> 31 ? bits - 1 : bits + 1);
+}
+
 // pbrt-v4's method (Pharr, Jakob, Humphreys, 4th ed., 6.8.6) rather than Waechter and Binder 2019 (Ray
 // Tracing Gems ch. 6): W&B move every point by a fixed 256 float steps of its own coordinates (and by a fixed
 // 1/65536 near the origin) whatever the shape, so they cannot know when a point is less accurate than
@@ -47,9 +59,9 @@ inline Point3 offset_ray_origin(const Point3& p, const Vec3& p_error, const Norm
     // normal leans along. Unlike pbrt, also when d = 0, so an exact point still leaves its surface.
     for (int a = 0; a < 3; ++a) {
         if (side[a] > 0.0f)
-            origin[a] = next_float_up(origin[a]);
+            origin[a] = spawn_step_up(origin[a]);
         else if (side[a] < 0.0f)
-            origin[a] = next_float_down(origin[a]);
+            origin[a] = -spawn_step_up(-origin[a]);
     }
     return origin;
 }
