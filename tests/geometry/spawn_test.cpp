@@ -9,6 +9,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "spawn_check.hpp"
@@ -82,6 +87,28 @@ TEST_CASE("offset_ray_origin moves by the error bound along the normal to the si
     CHECK(o.y < 0.0f);
     CHECK(o.z == 0.0f);
     CHECK(glm::length(o) == Approx(std::sqrt(2.0f) * 1e-3f).epsilon(1e-5));
+}
+
+TEST_CASE("spawn_step_up is nextafter towards +inf on every kind of float", "[spawn]") {
+    const float inf = std::numeric_limits<float>::infinity();
+    const float max = std::numeric_limits<float>::max();
+    const float tiny = std::numeric_limits<float>::denorm_min();
+    const float normal = std::numeric_limits<float>::min();
+    int checked = 0;
+    for (float x :
+         {0.0f,  -0.0f,  tiny, -tiny, normal, -normal, 1.0f,        -1.0f,        0.3f,          -0.3f,
+          1e30f, -1e30f, max,  -max,  inf,    -inf,    2.0f * tiny, -2.0f * tiny, normal - tiny, -(normal - tiny)}) {
+        INFO(x);
+        const float want = std::nextafter(x, inf);
+        CHECK(std::bit_cast<std::uint32_t>(spawn_step_up(x)) == std::bit_cast<std::uint32_t>(want));
+        CHECK(std::bit_cast<std::uint32_t>(-spawn_step_up(-x)) ==
+              std::bit_cast<std::uint32_t>(std::nextafter(x, -inf)));
+        ++checked;
+    }
+    CHECK(checked == 20);
+    CHECK(std::isnan(spawn_step_up(std::numeric_limits<float>::quiet_NaN())));
+    // nextafter(-tiny, +inf) is -0: the same bits as next_float_up gives.
+    CHECK(std::bit_cast<std::uint32_t>(spawn_step_up(-tiny)) == std::bit_cast<std::uint32_t>(next_float_up(-tiny)));
 }
 
 TEST_CASE("spawn_ray and spawn_ray_to set the range and stop short of the target", "[spawn]") {

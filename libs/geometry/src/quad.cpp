@@ -19,27 +19,19 @@ AABB Quad::bounds() const {
     return b;
 }
 
-// Inline: a scene's list runs it for every ray.
-inline bool Quad::hit_params(const Ray& ray, float& t, float& alpha, float& beta) const {
-    const float denom = glm::dot(m_normal, ray.direction);
-    if (denom == 0.0f || !std::isfinite(denom)) return false;
-    t = glm::dot(m_normal, m_corner - ray.origin) / denom;
-    if (!(t > ray.tmin && t < ray.tmax)) return false;
-    const Vec3 planar = ray.at(t) - m_corner;
-    alpha = glm::dot(m_w, glm::cross(planar, m_v));
-    beta = glm::dot(m_w, glm::cross(m_u, planar));
-    return alpha >= 0.0f && alpha <= 1.0f && beta >= 0.0f && beta <= 1.0f;
-}
-
 bool Quad::intersect(const Ray& ray, SurfaceHit& hit) const {
     float t, alpha, beta;
     if (!hit_params(ray, t, alpha, beta)) return false;
+    fill_record(ray, t, alpha, beta, hit);
+    return true;
+}
+
+void Quad::fill_record(const Ray& ray, float t, float alpha, float beta, SurfaceHit& hit) const {
     // Rebuilt from the parameters, so the point is on the quad's plane but for the rounding of these three
     // terms (gamma(3)); two more for the plane the test uses, whose unit normal is rounded off the edges'.
     const Point3 p = m_corner + alpha * m_u + beta * m_v;
     const Vec3 error = gamma_bound(5) * (glm::abs(m_corner) + glm::abs(alpha * m_u) + glm::abs(beta * m_v));
     geometry::fill_hit_unit_tangent(hit, ray, t, p, error, m_normal, {alpha, beta}, m_tangent, 0, this);
-    return true;
 }
 
 bool Quad::occluded(const Ray& ray) const {

@@ -21,11 +21,15 @@ bool Sphere::intersect(const Ray& ray, SurfaceHit& hit) const {
     return true;
 }
 
-void Sphere::complete_hit(const Ray& ray, float t, SurfaceHit& hit) const { fill(ray, t, hit, true); }
+void Sphere::complete_hit(const Ray& ray, float t, SurfaceHit& hit) const { fill(ray, t, hit, true, true); }
 
-void Sphere::complete_hit_without_uv(const Ray& ray, float t, SurfaceHit& hit) const { fill(ray, t, hit, false); }
+void Sphere::complete_hit_without_uv(const Ray& ray, float t, SurfaceHit& hit) const { fill(ray, t, hit, false, true); }
 
-inline void Sphere::fill(const Ray& ray, float t, SurfaceHit& hit, bool with_uv) const {
+void Sphere::complete_hit_for(const Ray& ray, float t, SurfaceHit& hit, bool with_uv, bool with_tangent) const {
+    fill(ray, t, hit, with_uv, with_tangent);
+}
+
+inline void Sphere::fill(const Ray& ray, float t, SurfaceHit& hit, bool with_uv, bool with_tangent) const {
     // Relative to the centre, then projected back onto the sphere (Pharr et al., pbrt-v4): the projection
     // removes the radial error of o + t d, which is what a spawned ray must clear, leaving gamma(5) |rel|.
     Vec3 rel = (ray.origin - m_centre) + t * ray.direction;
@@ -44,7 +48,8 @@ inline void Sphere::fill(const Ray& ray, float t, SurfaceHit& hit, bool with_uv)
         uv.x = (phi + kPi) / (2.0f * kPi);
         uv.y = 1.0f - std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi;
     }
-    geometry::fill_hit(hit, ray, t, p, error, n, uv, Vec3(n.z, 0.0f, -n.x), 0, this);
+    const Vec3 tangent = with_tangent ? geometry::unit_tangent(Vec3(n.z, 0.0f, -n.x), n) : hit.tangent;
+    geometry::fill_hit_unit_tangent(hit, ray, t, p, error, n, uv, tangent, 0, this);
 }
 
 }  // namespace rtlab

@@ -7,6 +7,7 @@
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -137,10 +138,26 @@ private:
         return (c00 + c10 + c01 + c11) * 0.25f;
     }
 
+    /// display_difference() of every pair against the threshold, each corner clamped once rather than once
+    /// per pair. A NaN component stays NaN through the clamp and its difference, which then counts 1 as there.
     bool differ(const RGB& a, const RGB& b, const RGB& c, const RGB& d) const {
         const float th = m_c.settings.adaptive.threshold;
-        return display_difference(a, b) > th || display_difference(a, c) > th || display_difference(a, d) > th ||
-               display_difference(b, c) > th || display_difference(b, d) > th || display_difference(c, d) > th;
+        const RGB ca = clamped(a), cb = clamped(b), cc = clamped(c), cd = clamped(d);
+        return distance(ca, cb) > th || distance(ca, cc) > th || distance(ca, cd) > th || distance(cb, cc) > th ||
+               distance(cb, cd) > th || distance(cc, cd) > th;
+    }
+
+    static RGB clamped(const RGB& v) {
+        return {std::clamp(v.r, 0.0f, 1.0f), std::clamp(v.g, 0.0f, 1.0f), std::clamp(v.b, 0.0f, 1.0f)};
+    }
+
+    static float component_distance(float a, float b) {
+        const float d = std::abs(a - b);
+        return std::isnan(d) ? 1.0f : d;
+    }
+
+    static float distance(const RGB& a, const RGB& b) {
+        return component_distance(a.r, b.r) + component_distance(a.g, b.g) + component_distance(a.b, b.b);
     }
 
     const TileContext& m_c;

@@ -16,22 +16,12 @@ float transmitted_cos2(float cos_i, float eta) {
 
 std::optional<Vec3> refract(const Vec3& d, const Normal3& n, float eta) {
     const float cos_i = -glm::dot(d, n);
-    const float cos2_t = transmitted_cos2(cos_i, eta);
-    if (cos2_t <= 0.0f) return std::nullopt;
-    const float cos_t = std::sqrt(cos2_t);
-    return eta * d + (eta * cos_i - cos_t) * n;
+    return refract_given(d, n, eta, cos_i, transmitted_cos2(cos_i, eta));
 }
 
 float fresnel_dielectric(float cos_i, float eta) {
     cos_i = std::clamp(cos_i, 0.0f, 1.0f);
-    const float cos2_t = transmitted_cos2(cos_i, eta);
-    if (cos2_t <= 0.0f) return 1.0f;
-    const float cos_t = std::sqrt(cos2_t);
-    // With eta = n_i / n_t: r_s = (eta cos_i - cos_t) / (eta cos_i + cos_t),
-    // r_p = (cos_i - eta cos_t) / (cos_i + eta cos_t).
-    const float r_s = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    const float r_p = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    return 0.5f * (r_s * r_s + r_p * r_p);
+    return fresnel_dielectric_given(cos_i, transmitted_cos2(cos_i, eta), eta);
 }
 
 float fresnel_schlick(float cos_i, float eta) {

@@ -4,6 +4,7 @@
 #include <rtlab/shading/optics.hpp>
 #include <rtlab/shading/whitted.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rtlab {
@@ -39,6 +40,8 @@ WhittedIntegrator::WhittedIntegrator(const SceneQuery& scene, std::vector<std::s
     : m_scene(scene), m_lights(std::move(lights)), m_options(std::move(options)) {
     for (std::size_t i = 0; i < m_lights.size(); ++i)
         if (!m_lights[i]) throw Error("whitted: light " + std::to_string(i) + " is null");
+    for (const auto& light : m_lights)
+        m_entries.push_back({light.get(), light->ambient(), light->sample_count(), light->uses_random_sample()});
     if (m_options.max_depth < 0) throw Error("whitted: max_depth must be >= 0");
     if (!(m_options.min_weight >= 0.0f)) throw Error("whitted: min_weight must be >= 0");
 }
@@ -134,12 +137,12 @@ RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, in
         SampleKey here = key;  // children get the caller's key and add their own depth
         here.bounce += static_cast<std::uint32_t>(depth);
         std::uint32_t dim = kLightDimension;
-        for (const auto& light : m_lights) {
-            L += t.diffuse * light->ambient();
-            const int n = light->sample_count();
+        for (const LightEntry& light : m_entries) {
+            L += t.diffuse * light.ambient;
+            const int n = light.sample_count;
             for (int i = 0; i < n; ++i, dim += 2) {
-                const Vec2 u = light->uses_random_sample() ? sample_uniform2(here, dim) : Vec2(0.5f);
-                const LightSample s = light->sample(hit.point, i, u, m_options.convention);
+                const Vec2 u = light.uses_random_sample ? sample_uniform2(here, dim) : Vec2(0.5f);
+                const LightSample s = light.light->sample(hit.point, i, u, m_options.convention);
                 // Light from below the true surface would have to pass through it.
                 if (s.arriving.is_black() || !(glm::dot(s.wi, ng) > 0.0f)) continue;
                 const RGB f = material.direct(t, wo_local, frame.to_local(s.wi), m_options.convention);
@@ -153,9 +156,14 @@ RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, in
         RGB kr = t.kr, kt = t.kt;
         const float eta =
             entering ? material.ior_outside() / material.ior_inside() : material.ior_inside() / material.ior_outside();
-        const std::optional<Vec3> refracted = refract(d, ns, eta);
+        // One transmitted cosine for both: dot(wo, ns) is exactly cos_i, and its clamp changes transmitted_cos2
+        // only when it is negative (then fresnel_dielectric works it out itself).
+        const float cos_i = -glm::dot(d, ns);
+        const float cos2_t = transmitted_cos2(cos_i, eta);
+        const std::optional<Vec3> refracted = refract_given(d, ns, eta, cos_i, cos2_t);
         if (material.fresnel()) {
-            const float f = fresnel_dielectric(glm::dot(wo, ns), eta);
+            const float f = cos_i >= 0.0f ? fresnel_dielectric_given(std::min(cos_i, 1.0f), cos2_t, eta)
+                                          : fresnel_dielectric(glm::dot(wo, ns), eta);
             kr *= f;
             kt *= 1.0f - f;
         }

@@ -24,26 +24,59 @@ public:
     void complete_hit(const Ray& ray, float t, SurfaceHit& hit) const override;
     void complete_hit_without_uv(const Ray& ray, float t, SurfaceHit& hit) const override;
 
+    /// The parts of the distance test that depend on the ray and the centre only. Spheres with one centre (a
+    /// glass shell's two surfaces) share them: a list works them out once per ray for such a run of spheres.
+    struct RayTerms {
+        Vec3 oc{0.0f};                        // origin - centre
+        float a = 0.0f, b = 0.0f, oo = 0.0f;  // d.d, oc.d, oc.oc
+        float perp_length = 0.0f;             // |oc - (b / a) d|, once perp_known
+        bool perp_known = false;
+    };
+    RayTerms ray_terms(const Ray& ray) const;
+    /// intersect_distance() on terms from ray_terms() of this ray and a sphere with this very centre (its tmax
+    /// may differ); fills in the terms it works out.
+    bool intersect_distance(const Ray& ray, RayTerms& terms, float& t) const;
+    const Point3& centre() const { return m_centre; }
+    /// complete_hit() (with_uv) or complete_hit_without_uv(), and without_tangent: hit.tangent left as it
+    /// was, for a caller whose shading never reads it (the unit tangent costs a square root and a division).
+    void complete_hit_for(const Ray& ray, float t, SurfaceHit& hit, bool with_uv, bool with_tangent) const;
+
 private:
     bool nearest_root(const Ray& ray, float& t) const;
-    void fill(const Ray& ray, float t, SurfaceHit& hit, bool with_uv) const;
+    void fill(const Ray& ray, float t, SurfaceHit& hit, bool with_uv, bool with_tangent) const;
     Point3 m_centre;
     float m_radius;
 };
 
+inline Sphere::RayTerms Sphere::ray_terms(const Ray& ray) const {
+    RayTerms terms;
+    terms.oc = ray.origin - m_centre;
+    terms.a = glm::dot(ray.direction, ray.direction);
+    terms.b = glm::dot(terms.oc, ray.direction);
+    terms.oo = glm::dot(terms.oc, terms.oc);
+    return terms;
+}
+
 inline bool Sphere::nearest_root(const Ray& ray, float& t) const {
-    const Vec3 oc = ray.origin - m_centre;
+    RayTerms terms = ray_terms(ray);
+    return intersect_distance(ray, terms, t);
+}
+
+inline bool Sphere::intersect_distance(const Ray& ray, RayTerms& terms, float& t) const {
     const Vec3& d = ray.direction;
-    const float a = glm::dot(d, d);
-    const float b = glm::dot(oc, d);
-    const float c = glm::dot(oc, oc) - m_radius * m_radius;
+    const float a = terms.a;
+    const float b = terms.b;
+    const float c = terms.oo - m_radius * m_radius;
     // Starting outside and moving away: both roots are negative as stable_roots() rounds them (q < 0, so
     // c / q and q / a are <= 0), which no tmin >= 0 admits; the test costs two compares of numbers the roots need
     // anyway.
     if (b > 0.0f && c > 0.0f && ray.tmin >= 0.0f) return false;
     // |oc|^2 - b^2 / a loses everything for a far ray; the perpendicular vector keeps full precision.
-    const Vec3 perp = oc - (b / a) * d;
-    const float disc = a * (m_radius - glm::length(perp)) * (m_radius + glm::length(perp));
+    if (!terms.perp_known) {
+        terms.perp_length = glm::length(terms.oc - (b / a) * d);
+        terms.perp_known = true;
+    }
+    const float disc = a * (m_radius - terms.perp_length) * (m_radius + terms.perp_length);
     float t0, t1;
     if (!geometry::stable_roots(a, b, c, disc, t0, t1)) return false;
     if (t0 > ray.tmin && t0 < ray.tmax)

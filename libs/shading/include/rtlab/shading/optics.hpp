@@ -3,6 +3,7 @@
 #include <rtlab/core/color.hpp>
 #include <rtlab/core/math.hpp>
 
+#include <cmath>
 #include <optional>
 
 namespace rtlab {
@@ -23,6 +24,26 @@ std::optional<Vec3> refract(const Vec3& d, const Normal3& n, float eta);
 /// Unpolarised Fresnel reflectance of a dielectric interface; cos_i = cos of the incident angle (> 0 on the
 /// side the light comes from), eta = n_incident / n_transmitted. 1 under total internal reflection.
 float fresnel_dielectric(float cos_i, float eta);
+
+/// refract() and fresnel_dielectric() given the cosine and transmitted_cos2 they work out, for a caller that
+/// asks both about one incidence (the Whitted recursion at a glass surface) and so works cos2_t out once.
+/// refract_given takes cos_i = -dot(d, n); fresnel_dielectric_given takes cos_i clamped to [0, 1] and
+/// cos2_t = transmitted_cos2 of that clamped cosine (the same number whenever the unclamped one is >= 0).
+inline std::optional<Vec3> refract_given(const Vec3& d, const Normal3& n, float eta, float cos_i, float cos2_t) {
+    if (cos2_t <= 0.0f) return std::nullopt;
+    const float cos_t = std::sqrt(cos2_t);
+    return eta * d + (eta * cos_i - cos_t) * n;
+}
+
+inline float fresnel_dielectric_given(float cos_i, float cos2_t, float eta) {
+    if (cos2_t <= 0.0f) return 1.0f;
+    const float cos_t = std::sqrt(cos2_t);
+    // With eta = n_i / n_t: r_s = (eta cos_i - cos_t) / (eta cos_i + cos_t),
+    // r_p = (cos_i - eta cos_t) / (cos_i + eta cos_t).
+    const float r_s = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    const float r_p = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    return 0.5f * (r_s * r_s + r_p * r_p);
+}
 
 /// Schlick's approximation of fresnel_dielectric, the fast variant charted against it.
 float fresnel_schlick(float cos_i, float eta);

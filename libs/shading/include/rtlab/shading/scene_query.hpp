@@ -43,10 +43,11 @@ public:
     virtual SurfaceInfo surface(const SurfaceHit& hit) const = 0;
 
     /// intersect() and surface() in one query, for shading. The record may leave out the uv of an object
-    /// whose material does not read_lookup() (nothing reads it there). The default runs the two queries.
+    /// whose material does not read_lookup(), and the tangent of one whose material does not
+    /// reflects_direct_light() (nothing reads them there). The default runs the two queries.
     virtual bool intersect_surface(const Ray& ray, SurfaceHit& hit, SurfaceInfo& info) const;
     /// One query per shadow-ray segment: with check_opaque, `opaque` when occluded(); else the closest
-    /// transmissive caster (intersect_transmissive(), its uv left out as for intersect_surface()) with its
+    /// transmissive caster (intersect_transmissive(), uv and tangent left out as for intersect_surface()) with its
     /// info, or `clear`. The default runs the three queries.
     virtual ShadowHit shadow(const Ray& ray, bool check_opaque, SurfaceHit& hit, SurfaceInfo& info) const;
 };

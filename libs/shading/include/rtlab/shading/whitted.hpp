@@ -59,8 +59,17 @@ private:
     RGB trace(const Ray& ray, const SampleKey& key, int depth, int crossings, float weight, RayStats& stats) const;
     RGB escaped(const Ray& ray) const;
 
+    /// What the light loop asks every light at every hit, asked once here (the answers of a const light).
+    struct LightEntry {
+        const Light* light;
+        RGB ambient;
+        int sample_count;
+        bool uses_random_sample;
+    };
+
     const SceneQuery& m_scene;
     std::vector<std::shared_ptr<const Light>> m_lights;
+    std::vector<LightEntry> m_entries;
     WhittedOptions m_options;
 };
 
