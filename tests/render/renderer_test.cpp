@@ -220,7 +220,7 @@ TEST_CASE("bad render settings are rejected with a reason", "[renderer]") {
         change(s);
         return s;
     };
-    CHECK_THROWS_WITH(render(camera, black, with([](RenderSettings& s) { s.tile_size = 0; })), Contains("tile size"));
+    CHECK_THROWS_WITH(render(camera, black, with([](RenderSettings& s) { s.tile_size = -1; })), Contains("tile size"));
     CHECK_THROWS_WITH(render(camera, black, with([](RenderSettings& s) { s.threads = -1; })), Contains("thread"));
     CHECK_THROWS_WITH(render(camera, black, with([](RenderSettings& s) {
                                  s.pattern = PixelPattern::jittered;
@@ -247,4 +247,19 @@ TEST_CASE("bad render settings are rejected with a reason", "[renderer]") {
     const FunctionRadiance throws(
         [](const Ray&, const SampleKey&, RayCounters&) -> RGB { throw Error("scene broke"); });
     CHECK_THROWS_WITH(render(camera, throws, RenderSettings{}), Contains("scene broke"));
+}
+
+TEST_CASE("tile size 0 picks 64 32 or 16 pixels from the image size alone", "[renderer]") {
+    CHECK(auto_tile_size(1280, 960) == 64);  // 300 tiles
+    CHECK(auto_tile_size(1024, 512) == 64);  // exactly 128
+    CHECK(auto_tile_size(1024, 511) == 32);
+    CHECK(auto_tile_size(640, 480) == 32);
+    CHECK(auto_tile_size(320, 240) == 16);
+    CHECK(auto_tile_size(8, 8) == 16);
+    // The render reports the tiles it cut.
+    const test::ImagePlaneCamera camera(640, 480);
+    const FunctionRadiance black([](const Ray&, const SampleKey&, RayCounters&) { return RGB(); });
+    RenderSettings s;
+    s.threads = 1;
+    CHECK(render(camera, black, s).stats.tiles_total == 20 * 15);
 }

@@ -193,7 +193,9 @@ void check_settings(const Camera& camera, const RenderSettings& s) {
     if (camera.width() <= 0 || camera.height() <= 0)
         throw Error("render: image size must be positive, got " + std::to_string(camera.width()) + "x" +
                     std::to_string(camera.height()));
-    if (s.tile_size < 1) throw Error("render: tile size must be at least 1, got " + std::to_string(s.tile_size));
+    if (s.tile_size < 0)
+        throw Error("render: tile size must be at least 1 (or 0: from the image size), got " +
+                    std::to_string(s.tile_size));
     if (s.threads < 0) throw Error("render: thread count must be >= 0, got " + std::to_string(s.threads));
     if (s.pattern != PixelPattern::adaptive) {
         pattern_sample_count(s.pattern, s.spp);
@@ -215,11 +217,20 @@ void check_settings(const Camera& camera, const RenderSettings& s) {
 
 }  // namespace
 
+int auto_tile_size(int width, int height) {
+    const long long pixels = static_cast<long long>(width) * height;
+    for (const int edge : {64, 32}) {
+        if (pixels >= 128LL * edge * edge) return edge;
+    }
+    return 16;
+}
+
 RenderResult render(const Camera& camera, const RadianceSource& radiance, const RenderSettings& settings,
                     const RenderCallbacks& callbacks) {
     check_settings(camera, settings);
     const auto start = std::chrono::steady_clock::now();
-    const int w = camera.width(), h = camera.height(), ts = settings.tile_size;
+    const int w = camera.width(), h = camera.height();
+    const int ts = settings.tile_size > 0 ? settings.tile_size : auto_tile_size(w, h);
     const int tiles_x = (w + ts - 1) / ts, tiles_y = (h + ts - 1) / ts;
     const int tiles_total = tiles_x * tiles_y;
 

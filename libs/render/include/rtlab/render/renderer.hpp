@@ -18,9 +18,17 @@ struct RenderSettings {
     int spp = 1;                ///< samples per pixel for grid, random and jittered
     AdaptiveSettings adaptive;  ///< for PixelPattern::adaptive
     std::uint64_t seed = 0;     ///< SampleKey::seed of every sample
-    int tile_size = 16;         ///< tiles are tile_size x tile_size pixels (smaller at the right and bottom)
-    int threads = 0;            ///< 0: as many as the machine has (TBB's default)
+    /// Tiles are tile_size x tile_size pixels (smaller at the right and bottom); 0 picks it from the image size
+    /// alone (auto_tile_size), never from the thread count, so that ray counts do not depend on threads.
+    int tile_size = 0;
+    int threads = 0;  ///< 0: as many as the machine has (TBB's default)
 };
+
+/// The tile edge for tile_size 0: the largest of 64, 32 and 16 pixels that still cuts the image into at least
+/// 128 tiles (16 below that). Adaptive sampling traces the lattice points on a tile's border once per tile, so
+/// larger tiles trace fewer of them twice (16-pixel tiles traced 13% more pixel corners than a 1280x960 image
+/// has, 64-pixel ones 3%), while 128 tiles still keep every core busy to the end.
+int auto_tile_size(int width, int height);
 
 /// \brief Where a render is: passed to RenderCallbacks::progress after every finished tile.
 struct RenderProgress {
