@@ -8,18 +8,14 @@
 
 #include <catch2/catch.hpp>
 
+#include "texture_lookup.hpp"
+
 #include <cmath>
 
 using namespace rtlab;
 using Catch::Matchers::Contains;
 
-namespace {
-TextureLookup at_uv(float u, float v) {
-    TextureLookup q;
-    q.uv = {u, v};
-    return q;
-}
-}  // namespace
+using test::at_uv;
 
 TEST_CASE("mip levels: each level the 2 x 2 means of the one before down to 1 x 1", "[mip]") {
     Image img(4, 2);

@@ -3,10 +3,13 @@
 
 #include <catch2/catch.hpp>
 
+#include "texture_lookup.hpp"
+
 #include <cmath>
 
 using namespace rtlab;
 using Catch::Matchers::Contains;
+using test::at_uv;
 
 namespace {
 // A texture the library does not know: defined and registered here, as a plugin module would do.
@@ -32,11 +35,6 @@ void register_stripes(TextureRegistry& r) {
         "stripes along u. period (default 0.5); a (default 1); b (default 0)");
 }
 
-TextureLookup at_uv(float u, float v) {
-    TextureLookup q;
-    q.uv = {u, v};
-    return q;
-}
 }  // namespace
 
 TEST_CASE("every built-in texture is registered with a documented parameter list", "[registry]") {
