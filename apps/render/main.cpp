@@ -7,8 +7,8 @@
 #include <rtlab/app/stop_on_interrupt.hpp>
 #include <rtlab/core/error.hpp>
 #include <rtlab/render/image_output.hpp>
-#include <rtlab/render/plugin.hpp>
-#include <rtlab/render/scene_loader.hpp>
+#include <rtlab/scene/plugin.hpp>
+#include <rtlab/scene/scene_loader.hpp>
 
 #include <fmt/core.h>
 

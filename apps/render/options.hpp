@@ -1,6 +1,6 @@
 #pragma once
 // rtlab-render's command line.
-#include <rtlab/render/scene_loader.hpp>
+#include <rtlab/scene/scene_loader.hpp>
 
 #include <filesystem>
 #include <optional>

@@ -4,7 +4,7 @@
 #include <rtlab/geometry/disk.hpp>
 #include <rtlab/geometry/instance.hpp>
 #include <rtlab/geometry/sphere.hpp>
-#include <rtlab/render/scene_loader.hpp>
+#include <rtlab/geometry/transform.hpp>
 #include <rtlab/render/texture_level.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>

@@ -4,7 +4,7 @@
 
 #include <rtlab/geometry/mesh_io.hpp>
 #include <rtlab/render/render_job.hpp>
-#include <rtlab/render/scene_loader.hpp>
+#include <rtlab/scene/scene_loader.hpp>
 #include <shared_data.hpp>
 
 #include <catch2/catch.hpp>

@@ -4,7 +4,7 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/core/image.hpp>
 #include <rtlab/geometry/sphere.hpp>
-#include <rtlab/render/plugin.hpp>
+#include <rtlab/scene/plugin.hpp>
 #include <rtlab/render/render_job.hpp>
 
 #include <cstdio>

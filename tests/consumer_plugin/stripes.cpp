@@ -2,7 +2,7 @@
 //   a, b    the two colours                    defaults (0.9, 0.1, 0.1) and (0.1, 0.1, 0.9)
 //   width   height of one band, > 0            default 0.25
 #include <rtlab/core/param_checks.hpp>
-#include <rtlab/render/plugin_abi.hpp>
+#include <rtlab/scene/plugin_abi.hpp>
 
 #include <cmath>
 

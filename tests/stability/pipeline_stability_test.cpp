@@ -7,10 +7,10 @@
 #include <rtlab/core/image.hpp>
 #include <rtlab/geometry/mesh_io.hpp>
 #include <rtlab/render/camera.hpp>
-#include <rtlab/render/plugin.hpp>
+#include <rtlab/scene/plugin.hpp>
 #include <rtlab/render/radiance_source.hpp>
 #include <rtlab/render/renderer.hpp>
-#include <rtlab/render/scene_loader.hpp>
+#include <rtlab/scene/scene_loader.hpp>
 #include <rtlab/shading/optics.hpp>
 #include <rtlab/textures/image_texture.hpp>
 #include <rtlab/textures/perlin_noise.hpp>
@@ -390,12 +390,12 @@ TEST_CASE("malformed meshes and images give an rtlab Error naming the file", "[s
     std::filesystem::remove_all(dir);
 }
 
-// Every malformed scene file of tests/render/bad_scenes given to the loader itself (the app's runner,
+// Every malformed scene file of tests/scene/bad_scenes given to the loader itself (the app's runner,
 // run_bad_scenes.cmake, checks rtlab-render's exit status and output on the same files): each must be one
 // rtlab::Error holding every line its expected.txt names. Cases that need command-line flags (args.txt) are
 // the app's alone.
 TEST_CASE("malformed scene files give an rtlab Error with every expected message", "[stability]") {
-    const std::filesystem::path cases = std::filesystem::path(RTLAB_SOURCE_DIR) / "tests/render/bad_scenes";
+    const std::filesystem::path cases = std::filesystem::path(RTLAB_SOURCE_DIR) / "tests/scene/bad_scenes";
     std::int64_t tried = 0, failures = 0;
     for (const auto& entry : std::filesystem::directory_iterator(cases)) {
         if (!entry.is_directory() || std::filesystem::exists(entry.path() / "args.txt")) continue;
@@ -431,7 +431,7 @@ TEST_CASE("malformed scene files give an rtlab Error with every expected message
     CHECK(tried >= 20);
     record({"loaders", "load_scene (JSON)",
             "malformed scene files: syntax, types, unknown and duplicate keys, dangling names, bad meshes, sizes, "
-            "plugin paths (tests/render/bad_scenes)",
+            "plugin paths (tests/scene/bad_scenes)",
             tried, failures, "loaded, or failed without an rtlab::Error holding the expected messages", std::nan(""),
             "0"});
 }

@@ -17,7 +17,7 @@
 // Bands are flat under lights whose arriving intensity does not vary over the surface: the classic
 // convention (no fall-off) or a directional light. Physically, the band is divided by pi like Lambert.
 #include <rtlab/core/param_checks.hpp>
-#include <rtlab/render/plugin_abi.hpp>
+#include <rtlab/scene/plugin_abi.hpp>
 #include <rtlab/textures/texture_param.hpp>
 
 #include <algorithm>

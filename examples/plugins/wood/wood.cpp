@@ -15,7 +15,7 @@
 //   axis         trunk direction: "x", "y" or "z"                    default "y"
 //   seed         noise seed (integer >= 0)                           default 0
 #include <rtlab/core/param_checks.hpp>
-#include <rtlab/render/plugin_abi.hpp>
+#include <rtlab/scene/plugin_abi.hpp>
 #include <rtlab/textures/perlin_noise.hpp>
 
 #include <algorithm>

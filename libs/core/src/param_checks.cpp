@@ -7,7 +7,7 @@
 namespace rtlab {
 
 void fail_param(const Params& params, std::string_view name, const std::string& problem) {
-    throw Error(params.context() + ": parameter '" + std::string(name) + "' " + problem);
+    throw ParamError(params.context() + ": parameter '" + std::string(name) + "' " + problem, {std::string(name)});
 }
 
 namespace {

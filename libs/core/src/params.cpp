@@ -41,14 +41,15 @@ const Params::Value* Params::find(std::string_view name) const {
 
 const Params::Value& Params::require(std::string_view name) const {
     const Value* v = find(name);
-    if (!v) throw Error(m_context + ": missing parameter '" + std::string(name) + "'");
+    if (!v) throw ParamError(m_context + ": missing parameter '" + std::string(name) + "'", {std::string(name)});
     return *v;
 }
 
 void Params::fail_type(std::string_view name, std::string_view expected) const {
     const Value* v = find(name);
-    throw Error(m_context + ": parameter '" + std::string(name) + "' must be " + std::string(expected) + ", not " +
-                (v ? type_name(*v) : "missing"));
+    throw ParamError(m_context + ": parameter '" + std::string(name) + "' must be " + std::string(expected) + ", not " +
+                         (v ? type_name(*v) : "missing"),
+                     {std::string(name)});
 }
 
 float Params::get_float(std::string_view name) const {
@@ -116,11 +117,15 @@ RGB Params::get_rgb(std::string_view name, const RGB& fallback) const { return h
 
 void Params::check_all_used() const {
     std::string unused;
+    std::vector<std::string> keys;
     for (const auto& [name, value] : m_values) {
         if (m_used.contains(name)) continue;
         unused += (unused.empty() ? "'" : ", '") + name + "'";
+        keys.push_back(name);
     }
-    if (!unused.empty()) throw Error(m_context + ": unknown or unused parameter(s) " + unused);
+    if (!unused.empty())
+        throw ParamError(m_context + ": unknown or unused parameter(s) " + unused, std::move(keys),
+                         ParamError::Reason::unused);
 }
 
 }  // namespace rtlab

@@ -1,6 +1,7 @@
 #pragma once
 /// \brief Named factories for one base type: how textures, materials and shapes are created by name.
 #include <rtlab/core/error.hpp>
+#include <rtlab/core/param_spec.hpp>
 #include <rtlab/core/params.hpp>
 
 #include <functional>
@@ -32,10 +33,11 @@ public:
 
     const std::string& category() const { return m_category; }
 
-    /// Adds a factory; a name registered twice is an error (two plugins fighting over one name).
-    void add(std::string name, Factory factory, std::string doc = {}) {
+    /// Adds a factory with the declaration of its parameters (what a scene loader checks a file's values
+    /// against); a name registered twice is an error (two plugins fighting over one name).
+    void add(std::string name, Factory factory, TypeSpec spec = {}) {
         if (m_entries.contains(name)) detail::throw_duplicate_name(m_category, name);
-        m_entries.emplace(std::move(name), Entry{std::move(factory), std::move(doc)});
+        m_entries.emplace(std::move(name), Entry{std::move(factory), std::move(spec)});
     }
 
     bool contains(std::string_view name) const { return m_entries.find(name) != m_entries.end(); }
@@ -49,7 +51,10 @@ public:
     }
 
     /// One-line documentation given at registration ("" when none).
-    const std::string& doc(std::string_view name) const { return entry(name).doc; }
+    const std::string& doc(std::string_view name) const { return entry(name).spec.doc(); }
+
+    /// The parameters the type declared at registration.
+    const TypeSpec& spec(std::string_view name) const { return entry(name).spec; }
 
     /// The factory registered under name: lets a plugin host move a module's registrations into its own
     /// registries once it has checked them all.
@@ -68,7 +73,7 @@ public:
 private:
     struct Entry {
         Factory factory;
-        std::string doc;
+        TypeSpec spec;
     };
 
     const Entry& entry(std::string_view name) const {

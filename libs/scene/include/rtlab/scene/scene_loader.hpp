@@ -1,7 +1,9 @@
 #pragma once
 /// \brief JSON scene files: one document in, a RenderJob and its output settings out.
+#include <rtlab/geometry/transform.hpp>
+#include <rtlab/render/image_limits.hpp>
 #include <rtlab/render/render_job.hpp>
-#include <rtlab/render/scene_registries.hpp>
+#include <rtlab/scene/scene_registries.hpp>
 #include <rtlab/tonemap/tone_operator.hpp>
 
 #include <cstdint>
@@ -17,15 +19,6 @@ namespace rtlab {
 
 /// The scene format version this loader reads.
 inline constexpr int kSceneFormatVersion = 1;
-
-/// Largest image side and pixel count a scene (or a command line) may ask for: 16384 and 2^26 pixels
-/// (a 768 MiB float image), so a typo such as 1e9 is an error rather than an allocation failure.
-inline constexpr int kMaxImageSide = 16384;
-inline constexpr std::int64_t kMaxImagePixels = std::int64_t{1} << 26;
-
-/// Throws rtlab::Error "<what>: ..." unless 1 <= width, height <= kMaxImageSide and width * height <=
-/// kMaxImagePixels.
-void check_image_size(std::int64_t width, std::int64_t height, std::string_view what = "image size");
 
 /// \brief Values that replace the scene file's (the command line's --width, --spp, ...). An override is
 /// checked like the file's value and its errors are reported with the file's.
@@ -62,11 +55,6 @@ struct LoadedScene {
     std::vector<std::string> plugins;          ///< the names the file asked for, in order
     std::vector<std::string> warnings;         ///< non-fatal problems (a mesh's missing .mtl, say)
 };
-
-/// A scene file's {"translate", "rotate", "scale"} transform: scale, then rotate about x, then y, then z
-/// (fixed axes, degrees), then translate. A program that builds a scene in code calls it to place objects
-/// exactly (bit for bit) as the same scene written as a file.
-Mat4 scene_transform(const Vec3& translate, const Vec3& rotate_degrees, const Vec3& scale);
 
 /// Loads a scene file. All problems of the file are collected and thrown together as one rtlab::Error,
 /// one per line: "FILE:LINE:COLUMN: /json/pointer: what was wrong and what was expected" (syntax errors

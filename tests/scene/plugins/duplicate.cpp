@@ -2,7 +2,7 @@
 // Without SELF_CLASH: material "toon" (the toon example's), texture "checker" (a built-in) and the free
 // material "duplicate-only", which must not be registered either when the module is refused. With
 // SELF_CLASH: material "twice" twice, which its own registration reports.
-#include <rtlab/render/plugin_abi.hpp>
+#include <rtlab/scene/plugin_abi.hpp>
 
 namespace {
 class Black final : public rtlab::Material {

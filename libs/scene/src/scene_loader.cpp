@@ -5,14 +5,12 @@
 #include <rtlab/core/search_path.hpp>
 #include <rtlab/geometry/instance.hpp>
 #include <rtlab/render/image_output.hpp>
-#include <rtlab/render/scene_loader.hpp>
+#include <rtlab/scene/scene_loader.hpp>
 #include <rtlab/render/texture_level.hpp>
 #include <rtlab/render/thin_lens_camera.hpp>
 #include <rtlab/textures/mip_map.hpp>
 
 #include "scene_json.hpp"
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -28,16 +26,6 @@ using scene_detail::describe;
 using scene_detail::Diagnostics;
 using scene_detail::Json;
 using scene_detail::pointer_append;
-
-void check_image_size(std::int64_t width, std::int64_t height, std::string_view what) {
-    const std::string name(what);
-    if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
-        throw Error(name + ": " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1.." +
-                    std::to_string(kMaxImageSide) + " per side");
-    if (width * height > kMaxImagePixels)
-        throw Error(name + ": " + std::to_string(width) + "x" + std::to_string(height) + " is more than " +
-                    std::to_string(kMaxImagePixels) + " pixels");
-}
 
 namespace {
 
@@ -1211,13 +1199,6 @@ SceneRegistries& builtin_registries() {
 }
 
 }  // namespace
-
-Mat4 scene_transform(const Vec3& translate, const Vec3& rotate_degrees, const Vec3& scale) {
-    const Mat4 r = glm::rotate(Mat4(1.0f), glm::radians(rotate_degrees.z), Vec3(0, 0, 1)) *
-                   glm::rotate(Mat4(1.0f), glm::radians(rotate_degrees.y), Vec3(0, 1, 0)) *
-                   glm::rotate(Mat4(1.0f), glm::radians(rotate_degrees.x), Vec3(1, 0, 0));
-    return glm::translate(Mat4(1.0f), translate) * r * glm::scale(Mat4(1.0f), scale);
-}
 
 LoadedScene parse_scene(std::string_view text, const fs::path& file, const SceneLoadOptions& options) {
     SceneRegistries& registries = options.registries ? *options.registries : builtin_registries();

@@ -12,7 +12,7 @@
 #include <rtlab/geometry/smooth_normals.hpp>
 #include <rtlab/geometry/sphere.hpp>
 #include <rtlab/geometry/triangle_shape.hpp>
-#include <rtlab/render/shape_registry.hpp>
+#include <rtlab/scene/shape_registry.hpp>
 
 #include <cmath>
 #include <memory>

@@ -1,4 +1,4 @@
-#include <rtlab/render/scene_registries.hpp>
+#include <rtlab/scene/scene_registries.hpp>
 
 namespace rtlab {
 

@@ -4,9 +4,9 @@
 #include <rtlab/core/image.hpp>
 #include <rtlab/geometry/quad.hpp>
 #include <rtlab/geometry/sphere.hpp>
-#include <rtlab/render/plugin.hpp>
+#include <rtlab/scene/plugin.hpp>
 #include <rtlab/render/render_job.hpp>
-#include <rtlab/render/scene_loader.hpp>
+#include <rtlab/scene/scene_loader.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -421,7 +421,7 @@ TEST_CASE("scenes/plugins.json loads toon and wood by name and matches its refer
     CHECK(scene.plugins == std::vector<std::string>{"toon", "wood"});
     REQUIRE(host.loaded().size() == 2);
     const Image image = render_job(scene.job).image;
-    const fs::path reference_file = source / "tests/render/reference/plugins.pfm";
+    const fs::path reference_file = source / "tests/scene/reference/plugins.pfm";
     if (std::getenv("RTLAB_UPDATE_REFERENCES")) write_image(image, reference_file);
     const Image reference = read_image(reference_file, ColorEncoding::linear);
     REQUIRE(reference.width() == 64);

@@ -1,8 +1,8 @@
-// Every scene in scenes/ loads and renders, at 64 x 48, the image committed in tests/render/reference/ within
+// Every scene in scenes/ loads and renders, at 64 x 48, the image committed in tests/scene/reference/ within
 // kSceneTolerance. Set RTLAB_UPDATE_REFERENCES=1 to rewrite the references (then look at them).
 #include <rtlab/core/image.hpp>
 #include <rtlab/render/render_job.hpp>
-#include <rtlab/render/scene_loader.hpp>
+#include <rtlab/scene/scene_loader.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -65,7 +65,7 @@ void check_scene(const std::string& name, bool needs_shared) {
     options.overrides.height = 48;
     const LoadedScene scene = load_scene(kSource / "scenes" / (name + ".json"), options);
     const Image image = render_job(scene.job).image;
-    const fs::path reference_file = kSource / "tests/render/reference" / (name + ".pfm");
+    const fs::path reference_file = kSource / "tests/scene/reference" / (name + ".pfm");
     if (std::getenv("RTLAB_UPDATE_REFERENCES")) {
         write_image(image, reference_file);
         WARN("wrote " + reference_file.string());

@@ -1,5 +1,5 @@
 #include <rtlab/core/error.hpp>
-#include <rtlab/render/scene_loader.hpp>
+#include <rtlab/scene/scene_loader.hpp>
 #include <rtlab/textures/mip_map.hpp>
 
 #include <catch2/catch.hpp>

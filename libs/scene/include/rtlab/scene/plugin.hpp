@@ -1,8 +1,8 @@
 #pragma once
 /// \brief Loading plugin modules: shared libraries that add materials, textures and lights to the host's
-/// registries (docs/plugins.md; the boundary itself is rtlab/render/plugin_abi.hpp).
+/// registries (docs/plugins.md; the boundary itself is rtlab/scene/plugin_abi.hpp).
 #include <rtlab/core/search_path.hpp>
-#include <rtlab/render/plugin_abi.hpp>
+#include <rtlab/scene/plugin_abi.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>
 #include <rtlab/textures/texture.hpp>

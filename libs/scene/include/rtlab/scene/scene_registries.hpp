@@ -1,6 +1,6 @@
 #pragma once
 /// \brief Every registry a scene file draws on, in one place, so that a plugin can add to all of them.
-#include <rtlab/render/shape_registry.hpp>
+#include <rtlab/scene/shape_registry.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>
 #include <rtlab/textures/texture.hpp>

@@ -1,5 +1,5 @@
 // Comparing a module's RtlabPluginRecord with the host's, field by field, in words a user can act on.
-#include <rtlab/render/plugin.hpp>
+#include <rtlab/scene/plugin.hpp>
 
 #include <cstdio>
 #include <cstring>

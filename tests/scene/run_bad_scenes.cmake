@@ -1,4 +1,4 @@
-# Runs rtlab-render on every case of tests/render/bad_scenes/: CASE/scene.json (a file, or whatever the case
+# Runs rtlab-render on every case of tests/scene/bad_scenes/: CASE/scene.json (a file, or whatever the case
 # puts there), CASE/expected.txt (lines that must each appear in the error output) and an optional
 # CASE/args.txt (extra arguments, one a line). Each must exit with status 1 within the time limit,
 # print every expected line, and leave no output file.

@@ -1,7 +1,7 @@
 // Test module: a plugin whose record differs from the host's in the one field named by the WRONG_* macro
 // it is compiled with (tests/render/CMakeLists.txt), as a module built against another rtlab, standard
 // library or GLM configuration would. The host must refuse it before calling rtlab_plugin_register.
-#include <rtlab/render/plugin_abi.hpp>
+#include <rtlab/scene/plugin_abi.hpp>
 
 #include <cstdio>
 

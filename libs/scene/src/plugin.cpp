@@ -1,6 +1,6 @@
 // PluginHost: finding, opening, checking and registering plugin modules.
 #include <rtlab/core/error.hpp>
-#include <rtlab/render/plugin.hpp>
+#include <rtlab/scene/plugin.hpp>
 
 #include <dlfcn.h>
 
@@ -40,7 +40,7 @@ template <class Base>
 std::vector<std::string> move_entries(const Registry<Base>& staged, Registry<Base>& host,
                                       std::map<std::string, std::string, std::less<>>& owner, const std::string& file) {
     for (const std::string& name : staged.names()) {
-        host.add(name, staged.factory(name), staged.doc(name));
+        host.add(name, staged.factory(name), staged.spec(name));
         owner[host.category() + ":" + name] = file;
     }
     return staged.names();
