@@ -47,6 +47,7 @@ struct ParamSpec {
     ParamSpec& require() { required = true; return *this; }
     ParamSpec& defaults(std::string text) { default_value = std::move(text); return *this; }
     ParamSpec& range(double low, double high) { lo = low; hi = high; return *this; }
+    ParamSpec& at_least(double low) { lo = low; return *this; }
     ParamSpec& allow(std::vector<std::string> allowed) { words = std::move(allowed); return *this; }
     ParamSpec& in(std::string u) { unit = std::move(u); return *this; }
     ParamSpec& part_of_files() { file_part = true; return *this; }
@@ -55,10 +56,8 @@ struct ParamSpec {
 /// \brief A type's documentation and its parameters, in the order a listing shows them.
 class TypeSpec {
 public:
-    TypeSpec() = default;
+    /// Every type is registered with one (Registry::add takes no default), so none goes without a doc.
     explicit TypeSpec(std::string doc) : m_doc(std::move(doc)) {}
-    // TRANSITION: registrations that still pass a doc string only.
-    TypeSpec(const char* doc) : m_doc(doc) {}  // NOLINT
 
     /// Declares a parameter; a name declared twice is a programming error (std::logic_error).
     ParamSpec& add(std::string name, ParamKind kind, std::string doc);
@@ -69,6 +68,9 @@ public:
     const std::vector<ParamSpec>& params() const { return m_params; }
     /// The declaration of `name`, or nullptr.
     const ParamSpec* find(std::string_view name) const;
+    /// The declaration of `name` to change (a shared key's default for one type: glass's kr is 1); an
+    /// undeclared name is a programming error (std::logic_error).
+    ParamSpec& at(std::string_view name);
     std::vector<std::string> names() const;
 
 private:
