@@ -146,7 +146,9 @@ TEST_CASE("the toon and wood examples load by name and register their types", "[
     CHECK(toon.description == "toon: a cel-shading material");
     CHECK(h.materials.contains("toon"));
     CHECK(h.textures.contains("wood"));
-    CHECK_THAT(h.materials.doc("toon"), Catch::Contains("levels"));
+    CHECK(h.materials.spec("toon").find("levels") != nullptr);
+    CHECK(h.materials.spec("toon").find("opacity") != nullptr);  // the shared keys, extended with
+    CHECK(h.textures.spec("wood").find("axis")->words == std::vector<std::string>{"x", "y", "z"});
     REQUIRE(h.plugins.loaded().size() == 2);
     // Loading a module again, by path or by name, is a no-op (a scene may name what --plugin loaded).
     CHECK(h.plugins.load_file(kExampleDir / "toon.so").file == toon.file);
