@@ -296,7 +296,7 @@ TEST_CASE("a module with a wrong record is refused naming the field, the expecte
                                      std::to_string(host.rtlab_version_minor + 1) + "." +
                                      std::to_string(host.rtlab_version_patch);
     const std::vector<std::pair<std::string, std::vector<std::string>>> cases{
-        {"abi", {"plugin ABI version: expected 1, got 99"}},
+        {"abi", {"plugin ABI version: expected 2, got 100"}},
         {"headers",
          {"public headers hash: expected '" + std::string(host.headers_hash) + "', got '" + std::string(64, '0') +
           "'"}},
