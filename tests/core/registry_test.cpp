@@ -29,7 +29,8 @@ Registry<Shape> make_registry() {
         "ball", [](const Params& p) { return std::make_shared<Ball>(p.get_float("radius", 1.0f)); }, ball);
     TypeSpec cube("a cube");
     cube.add("side", ParamKind::number, "its side").require();
-    r.add("cube", [](const Params& p) { return std::make_shared<Cube>(p.get_float("side")); }, cube);
+    r.add(
+        "cube", [](const Params& p) { return std::make_shared<Cube>(p.get_float("side")); }, cube);
     return r;
 }
 }  // namespace
@@ -62,7 +63,8 @@ TEST_CASE("missing or mistyped or unused parameters are errors naming the object
 
 TEST_CASE("duplicate registration is an error", "[registry]") {
     auto r = make_registry();
-    CHECK_THROWS_WITH(r.add("ball", [](const Params&) { return std::make_shared<Ball>(1.0f); }, TypeSpec("a ball")),
+    CHECK_THROWS_WITH(r.add(
+                          "ball", [](const Params&) { return std::make_shared<Ball>(1.0f); }, TypeSpec("a ball")),
                       Contains("already registered"));
 }
 

@@ -4,8 +4,8 @@
 #include <rtlab/core/image.hpp>
 #include <rtlab/geometry/quad.hpp>
 #include <rtlab/geometry/sphere.hpp>
-#include <rtlab/scene/plugin.hpp>
 #include <rtlab/render/render_job.hpp>
+#include <rtlab/scene/plugin.hpp>
 #include <rtlab/scene/scene_loader.hpp>
 
 #include <catch2/catch.hpp>

@@ -53,7 +53,8 @@ TEST_CASE("every built-in texture is registered with a documented parameter list
     CHECK_THAT(listing("checker"), Contains("tiles_u (number, default 8") && Contains("tiles_v") &&
                                        Contains("color1 (colour or texture, default 1): even tiles") &&
                                        Contains("color2 (colour or texture, default 0): odd tiles"));
-    CHECK_THAT(listing("checker3d"), Contains("tiles") && Contains("color1 (colour or texture, default 1): even cells") &&
+    CHECK_THAT(listing("checker3d"), Contains("tiles") &&
+                                         Contains("color1 (colour or texture, default 1): even cells") &&
                                          Contains("color2 (colour or texture, default 0): odd cells"));
     CHECK_THAT(listing("mandelbrot"), Contains("iterations") && Contains("escape_radius") && Contains("center") &&
                                           Contains("zoom") && Contains("inside") && Contains("smooth"));
@@ -89,8 +90,9 @@ TEST_CASE("a texture defined outside the library registers and nests like a buil
     CHECK(checker->eval(at_uv(1.1f, 0.5f)) == RGB(0.5f));              // tile (1, 0): colour 2
 
     CHECK_THROWS_WITH(
-        r.add("stripes", [](const Params&) { return std::shared_ptr<Texture>{}; }, TypeSpec("stripes again")),
-                      Contains("already registered"));
+        r.add(
+            "stripes", [](const Params&) { return std::shared_ptr<Texture>{}; }, TypeSpec("stripes again")),
+        Contains("already registered"));
 }
 
 TEST_CASE("parameter errors name the texture and the parameter", "[registry]") {

@@ -50,11 +50,14 @@ private:
 };
 
 TypeSpec area_spec() {
-    TypeSpec s("rectangular light corner + a edge_u + b edge_v, n x n stratified samples; emits towards "
-               "edge_u x edge_v");
+    TypeSpec s(
+        "rectangular light corner + a edge_u + b edge_v, n x n stratified samples; emits towards "
+        "edge_u x edge_v");
     s.add("corner", ParamKind::vector, "one corner").defaults("[0, 0, 0]").in("world units");
     s.add("edge_u", ParamKind::vector, "the first edge from the corner").defaults("[1, 0, 0]").in("world units");
-    s.add("edge_v", ParamKind::vector, "the second edge, not parallel to edge_u").defaults("[0, 0, 1]").in("world units");
+    s.add("edge_v", ParamKind::vector, "the second edge, not parallel to edge_u")
+        .defaults("[0, 0, 1]")
+        .in("world units");
     s.add("intensity", ParamKind::colour, "radiance times area").defaults("1");
     s.add("samples", ParamKind::integer, "n: n x n shadow rays per shaded point").defaults("4").range(1, 64);
     s.add("two_sided", ParamKind::boolean, "emits from both sides").defaults("false");

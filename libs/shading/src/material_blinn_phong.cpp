@@ -49,9 +49,8 @@ private:
 };
 
 TypeSpec blinn_phong_spec() {
-    return lobe_spec(
-        "Blinn-Phong: physical kd / pi + ks c(e) (n.h)^e, normalised; classic kd (n.l) + ks (n.h)^e",
-        "exponent e of n.h, h the half vector: larger is a smaller, sharper highlight");
+    return lobe_spec("Blinn-Phong: physical kd / pi + ks c(e) (n.h)^e, normalised; classic kd (n.l) + ks (n.h)^e",
+                     "exponent e of n.h, h the half vector: larger is a smaller, sharper highlight");
 }
 }  // namespace
 

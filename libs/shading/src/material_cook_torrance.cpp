@@ -87,8 +87,9 @@ Fresnel read_fresnel(const Params& p, const Material::Whitted& w) {
 }
 
 TypeSpec cook_torrance_spec() {
-    TypeSpec s("microfacet: kd / pi + ks D G F / (4 cos_o cos_i); a conductor (metal, or eta and k) or else a "
-               "dielectric lobe of index ior / ior_outside. Classic convention: times pi");
+    TypeSpec s(
+        "microfacet: kd / pi + ks D G F / (4 cos_o cos_i); a conductor (metal, or eta and k) or else a "
+        "dielectric lobe of index ior / ior_outside. Classic convention: times pi");
     s.add("kd", ParamKind::texture, "diffuse colour").defaults("0");
     s.add("ks", ParamKind::texture, "scale of the specular lobe").defaults("1");
     s.add("roughness", ParamKind::scalar, "perceptual roughness, alpha = roughness^2").defaults("0.3").range(0, 1);

@@ -24,9 +24,10 @@ NoiseSettings read_noise_settings(const Params& p) {
 }
 
 TypeSpec noise_spec(const std::string& what) {
-    TypeSpec s(what + " in 2D (uv) or 3D (object-space point); t in [0, 1] blends color1 to color2: noise and fbm "
-                      "give t = 0.5 + 0.5 n, turbulence t = sum |n|, marble t = 0.5 + 0.5 sin(2 pi stripes x + "
-                      "distortion turbulence)");
+    TypeSpec s(what +
+               " in 2D (uv) or 3D (object-space point); t in [0, 1] blends color1 to color2: noise and fbm "
+               "give t = 0.5 + 0.5 n, turbulence t = sum |n|, marble t = 0.5 + 0.5 sin(2 pi stripes x + "
+               "distortion turbulence)");
     s.add("dimension", ParamKind::integer, "2: by uv; 3: by the object-space point").defaults("3").range(2, 3);
     s.add("pattern", ParamKind::word, "what t is made of")
         .defaults("noise")

@@ -175,8 +175,9 @@ std::array<Image, 6> faces_of(const CubeMapTexture& map) {
 }
 
 TypeSpec cubemap_spec() {
-    TypeSpec s("environment cube map by lookup.direction, OpenGL face convention, seamless bilinear filtering; "
-               "give exactly one of: the six faces, cross, folder or bake");
+    TypeSpec s(
+        "environment cube map by lookup.direction, OpenGL face convention, seamless bilinear filtering; "
+        "give exactly one of: the six faces, cross, folder or bake");
     for (const char* face : kFaceNames)
         s.add(face, ParamKind::file, std::string("the ") + face + " face (with the five others)");
     s.add("cross", ParamKind::file, "one horizontal-cross file (4N x 3N)");

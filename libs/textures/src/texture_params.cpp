@@ -8,7 +8,9 @@ ColorEncoding get_encoding(const Params& params) {
 }
 
 void add_encoding(TypeSpec& spec) {
-    spec.add("encoding", ParamKind::word, "how an 8-bit file's values are decoded").defaults("srgb").allow({"srgb", "linear"});
+    spec.add("encoding", ParamKind::word, "how an 8-bit file's values are decoded")
+        .defaults("srgb")
+        .allow({"srgb", "linear"});
 }
 
 void add_two_colours(TypeSpec& spec, const std::string& what1, const std::string& default1, const std::string& what2,

@@ -51,8 +51,9 @@ namespace detail {
 
 namespace {
 TypeSpec stars_spec() {
-    TypeSpec s("random star field by lookup.direction, one value per cell of a cube-face grid; bake it into a "
-               "cubemap (\"bake\") to filter it");
+    TypeSpec s(
+        "random star field by lookup.direction, one value per cell of a cube-face grid; bake it into a "
+        "cubemap (\"bake\") to filter it");
     s.add("resolution", ParamKind::integer, "cells across a cube face").defaults("512").range(1, 8192);
     s.add("density", ParamKind::number, "chance of a star per cell").defaults("0.0025").range(0, 1);
     s.add("seed", ParamKind::integer, "which random field").defaults("7").range(0, 1 << 30);

@@ -10,8 +10,9 @@ namespace rtlab::scene_detail {
 
 namespace {
 TypeSpec instance_spec() {
-    TypeSpec s("another copy of a named shape (usually a mesh, whose tree it shares) with its own transform and "
-               "material");
+    TypeSpec s(
+        "another copy of a named shape (usually a mesh, whose tree it shares) with its own transform and "
+        "material");
     s.add("shape", ParamKind::shape, "the name of the shape to show again").require();
     s.add("matrix", ParamKind::numbers,
           "object to world, 16 numbers row by row (default: the identity; a scene file gives 'transform')");

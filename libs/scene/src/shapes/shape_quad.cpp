@@ -7,8 +7,9 @@ namespace rtlab::scene_detail {
 
 namespace {
 TypeSpec quad_spec() {
-    TypeSpec s("parallelogram corner + a edge_u + b edge_v, a, b in [0, 1]; outside is the side of edge_u x "
-               "edge_v; uv = (a, b)");
+    TypeSpec s(
+        "parallelogram corner + a edge_u + b edge_v, a, b in [0, 1]; outside is the side of edge_u x "
+        "edge_v; uv = (a, b)");
     s.add("corner", ParamKind::vector, "one corner").require().in("world units");
     s.add("edge_u", ParamKind::vector, "the edge along which u grows").require().in("world units");
     s.add("edge_v", ParamKind::vector, "the edge along which v grows, not parallel to edge_u")
