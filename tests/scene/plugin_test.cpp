@@ -10,6 +10,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "declaration_check.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -154,6 +156,15 @@ TEST_CASE("the toon and wood examples load by name and register their types", "[
     CHECK(h.plugins.load_file(kExampleDir / "toon.so").file == toon.file);
     CHECK(h.plugins.load_by_name("toon").file == toon.file);
     CHECK(h.plugins.loaded().size() == 2);
+}
+
+TEST_CASE("the example plugins' types read exactly the keys they declare", "[plugins]") {
+    Host h;
+    h.plugins.load_by_name("toon");
+    h.plugins.load_by_name("wood");
+    test::Samples samples;
+    test::check_type(h.materials, "toon", samples);
+    test::check_type(h.textures, "wood", samples);
 }
 
 TEST_CASE("a toon sphere renders in flat bands and a Lambert one does not", "[plugins]") {
