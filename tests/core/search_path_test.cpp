@@ -48,7 +48,10 @@ TEST_CASE("folders and missing names are not files", "[search_path]") {
     CHECK_FALSE(path.find("sub").has_value());
     CHECK_FALSE(path.find("").has_value());
     CHECK_THROWS_WITH(path.require("sub"), Catch::Contains("'sub': file not found") && Catch::Contains("one"));
-    CHECK_THROWS_WITH(SearchPath().require("x.png", root), Catch::Contains("no data folders"));
+    // Only the folder given: it is named, and no "no folders" phrase follows it.
+    CHECK_THROWS_WITH(SearchPath().require("x.png", root),
+                      Catch::Contains("(looked in '" + root.string() + "')") && !Catch::Contains("no "));
+    CHECK_THROWS_WITH(SearchPath().require("x.png"), Catch::Contains("no folder to look in was given"));
 }
 
 TEST_CASE("the environment variable adds folders after the explicit ones", "[search_path]") {
