@@ -56,9 +56,9 @@ struct ParamSpec {
 class TypeSpec {
 public:
     TypeSpec() = default;
-    explicit TypeSpec(std::string doc) : m_doc(std::move(doc)) {}
-    // TRANSITION: registrations that still pass a doc string only.
-    TypeSpec(const char* doc) : m_doc(doc) {}  // NOLINT
+    // TRANSITION (implicit until every registration declares its parameters): a doc string only.
+    TypeSpec(std::string doc) : m_doc(std::move(doc)) {}  // NOLINT
+    TypeSpec(const char* doc) : m_doc(doc) {}             // NOLINT
 
     /// Declares a parameter; a name declared twice is a programming error (std::logic_error).
     ParamSpec& add(std::string name, ParamKind kind, std::string doc);
