@@ -126,6 +126,10 @@ TEST_CASE("data path from the environment: options then RTLAB_DATA_PATH then RTL
     fs::create_directories(root / "opt");
     fs::create_directories(root / "env");
     fs::create_directories(root / "shared");
+    // The run "as a user would" sets RTLAB_NO_SHARED=1 for every test: this one sets it itself, below.
+    const char* no_shared = std::getenv("RTLAB_NO_SHARED");
+    const std::string saved = no_shared ? no_shared : "";
+    ::unsetenv("RTLAB_NO_SHARED");
     const ScopedEnv data("RTLAB_DATA_PATH", (root / "env").string() + "::/nonexistent-env");
     const ScopedEnv shared("RTLAB_SHARED_DIR", (root / "shared").string());
     {
@@ -138,11 +142,14 @@ TEST_CASE("data path from the environment: options then RTLAB_DATA_PATH then RTL
         CHECK(path.missing_folders()[0].folder == "/nonexistent-opt");
         CHECK(path.missing_folders()[1].folder == "/nonexistent-env");
     }
-    // RTLAB_NO_SHARED=1: what a user without ../shared has.
-    const ScopedEnv off("RTLAB_NO_SHARED", "1");
-    const DataPath path = DataPath::from_environment({}, "/usr/bin/x");
-    REQUIRE(path.roots().size() == 1);
-    CHECK(path.roots()[0].origin == "RTLAB_DATA_PATH");
+    {
+        // RTLAB_NO_SHARED=1: what a user without ../shared has.
+        const ScopedEnv off("RTLAB_NO_SHARED", "1");
+        const DataPath path = DataPath::from_environment({}, "/usr/bin/x");
+        REQUIRE(path.roots().size() == 1);
+        CHECK(path.roots()[0].origin == "RTLAB_DATA_PATH");
+    }
+    if (no_shared) ::setenv("RTLAB_NO_SHARED", saved.c_str(), 1);
 }
 
 TEST_CASE("data path: the source checkout is found above the executable", "[data_path]") {

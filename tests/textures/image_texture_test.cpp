@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "shared_data.hpp"
+#include <skip.hpp>
 
 #include <fstream>
 
@@ -137,10 +138,8 @@ TEST_CASE("missing or corrupt image files are errors naming the file", "[image]"
 
 TEST_CASE("a real planet map loads and wraps seamlessly in u", "[image]") {
     const auto shared = test::shared_dir();
-    if (!shared || !std::filesystem::exists(*shared / "textures" / "earth.jpg")) {
-        WARN("skipped: ../shared/textures/earth.jpg not found (set RTLAB_SHARED_DIR)");
-        return;
-    }
+    if (!shared || !std::filesystem::exists(*shared / "textures" / "earth.jpg"))
+        return test::skip(test::needs_shared("textures/earth.jpg"));
     const auto earth = ImageTexture::load(*shared / "textures" / "earth.jpg");
     CHECK(earth->image().width() == 2048);
     CHECK(earth->image().height() == 1024);
