@@ -118,7 +118,8 @@ SolarAssets load_solar_assets(const DataPath& data, bool procedural) {
     const auto px = procedural ? std::nullopt : data.find(sky + "px.jpg");
     std::string folder = px ? px->path.parent_path().string() : std::string();
     for (const char* face : {"nx", "py", "ny", "pz", "nz"})
-        if (!folder.empty() && !std::filesystem::is_regular_file(std::filesystem::path(folder) / (face + std::string(".jpg"))))
+        if (!folder.empty() &&
+            !std::filesystem::is_regular_file(std::filesystem::path(folder) / (face + std::string(".jpg"))))
             folder.clear();
     assets.uses.push_back({sky, folder.empty() ? std::nullopt : px});
     assets.sky = textures.create("cubemap", sky_params(textures, folder));

@@ -99,11 +99,12 @@ TEST_CASE("course apps: data files are looked up in --data-dir, RTLAB_DATA_PATH,
 TEST_CASE("course apps: a --data-dir folder that does not exist is a warning naming the program", "[apps]") {
     const auto dir = test::scratch_dir("apps_missing_data_dir");
     const std::string out = " -o '" + (dir / "out.pfm").string() + "'";
-    const auto solar = run_app(SOLAR_EXE, "--procedural --width 8 --height 6 --quiet --data-dir /nonexistent" + out, dir);
+    const auto solar =
+        run_app(SOLAR_EXE, "--procedural --width 8 --height 6 --quiet --data-dir /nonexistent" + out, dir);
     CHECK(solar.status == 0);
     CHECK(solar.err == "rtlab-solar-system: warning: --data-dir '/nonexistent' does not exist\n");
-    const auto whitted =
-        run_app(WHITTED_EXE, "--width 8 --height 6 --quiet --data-dir /nonexistent --data-dir /nonexistent2" + out, dir);
+    const auto whitted = run_app(
+        WHITTED_EXE, "--width 8 --height 6 --quiet --data-dir /nonexistent --data-dir /nonexistent2" + out, dir);
     CHECK(whitted.status == 0);
     CHECK(whitted.err ==
           "rtlab-whitted: warning: --data-dir '/nonexistent' does not exist\n"
@@ -270,7 +271,8 @@ namespace {
 // Renders rtlab-bunny in each material with its mesh from one data source (the --data-dir root alone).
 void check_bunny_materials(test::DataSource source) {
     const auto root = test::data_root(source);
-    if (!root) return test::skip(std::string("no ") + test::source_name(source) + " data for models/stanford-bunny.obj");
+    if (!root)
+        return test::skip(std::string("no ") + test::source_name(source) + " data for models/stanford-bunny.obj");
     const auto dir = test::scratch_dir(std::string("apps_bunny_") + test::source_name(source));
     for (const char* material : {"diffuse", "phong", "mirror", "glass"}) {
         INFO(material);

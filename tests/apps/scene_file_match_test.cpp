@@ -102,10 +102,10 @@ double relative_rms(const Image& a, const Image& b) {
 // change (841 of 3072 pixels differ, relative RMS 1.4e-7).
 void require_bunny_match(test::DataSource source) {
     const auto root = test::data_root(source);
-    if (!root) return test::skip(std::string("no ") + test::source_name(source) + " data for models/stanford-bunny.obj");
+    if (!root)
+        return test::skip(std::string("no ") + test::source_name(source) + " data for models/stanford-bunny.obj");
     // As rtlab-bunny loads it (apps/bunny/main.cpp).
-    const auto mesh =
-        std::make_shared<const TriangleMesh>(with_smooth_normals(load_mesh(*root / bunny::kDefaultMesh)));
+    const auto mesh = std::make_shared<const TriangleMesh>(with_smooth_normals(load_mesh(*root / bunny::kDefaultMesh)));
     RenderJob app = bunny::make_bunny_job(mesh, "diffuse", kWidth, kHeight);
     LoadedScene file = load_course_scene("bunny", {*root});
     require_same_settings(app, file.job);
@@ -133,8 +133,8 @@ Image require_solar_match(const std::optional<fs::path>& data_root, std::size_t 
     CHECK(missing == procedural);
     RenderJob app = solar::make_solar_job(assets, solar::SolarView{kWidth, kHeight, 0, 1, true, 4.0f});
     const Image a = render_job(app).image;  // before anything else sets the shared textures' levels
-    LoadedScene file = load_course_scene("solar_system", data_root ? std::vector<fs::path>{*data_root}
-                                                                   : std::vector<fs::path>{});
+    LoadedScene file =
+        load_course_scene("solar_system", data_root ? std::vector<fs::path>{*data_root} : std::vector<fs::path>{});
     CHECK(file.warnings.size() == procedural);
     require_same_settings(app, file.job);
     const Image b = render_job(file.job).image;

@@ -26,19 +26,22 @@ void touch(const fs::path& p) {
 // A manifest of one package file that exists and one of a package that is not installed.
 std::vector<AssetEntry> test_manifest(const fs::path& root) {
     touch(root / "pkg" / "bunny.obj");
-    return parse_asset_manifest("# comment\n\n"
-                                "models/bunny.obj\tpkg-a\t" +
-                                    (root / "pkg" / "bunny.obj").string() +
-                                    "\t3 triangles\tcredit A\n"
-                                    "textures/earth.jpg\tpkg-b\t/nonexistent/earth.jpg\t2x1\tcredit B\n"
-                                    "models/bunny.obj\tshared\tmodels/bunny.obj\t4 triangles\tcredit S\n",
-                                "test");
+    return parse_asset_manifest(
+        "# comment\n\n"
+        "models/bunny.obj\tpkg-a\t" +
+            (root / "pkg" / "bunny.obj").string() +
+            "\t3 triangles\tcredit A\n"
+            "textures/earth.jpg\tpkg-b\t/nonexistent/earth.jpg\t2x1\tcredit B\n"
+            "models/bunny.obj\tshared\tmodels/bunny.obj\t4 triangles\tcredit S\n",
+        "test");
 }
 
 // Sets an environment variable for one scope.
 struct ScopedEnv {
     std::string name;
-    ScopedEnv(std::string n, const std::string& value) : name(std::move(n)) { ::setenv(name.c_str(), value.c_str(), 1); }
+    ScopedEnv(std::string n, const std::string& value) : name(std::move(n)) {
+        ::setenv(name.c_str(), value.c_str(), 1);
+    }
     ~ScopedEnv() { ::unsetenv(name.c_str()); }
 };
 
@@ -113,9 +116,9 @@ TEST_CASE("data path: missing folders are listed and messages name every place",
     CHECK(path.describe(".") == "'.', '" + (root / "x").string() +
                                     "' (--data-dir) and the files of the packages pkg-a; not installed: pkg-b "
                                     "(scripts/setup.sh installs them)");
-    CHECK_THROWS_WITH(path.require("textures/earth.jpg"),
-                      Catch::StartsWith("'textures/earth.jpg': file not found (looked in '") &&
-                          !Catch::Contains("no data folders"));
+    CHECK_THROWS_WITH(
+        path.require("textures/earth.jpg"),
+        Catch::StartsWith("'textures/earth.jpg': file not found (looked in '") && !Catch::Contains("no data folders"));
     // Never "in no data folders": the packages alone are named.
     CHECK(DataPath({}, true, manifest).describe().rfind("the files of the packages pkg-a", 0) == 0);
     CHECK(DataPath({}, false, manifest).describe().find("nowhere") == 0);

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "shared_data.hpp"
-#include <skip.hpp>
+#include "skip.hpp"
 
 using namespace rtlab;
 

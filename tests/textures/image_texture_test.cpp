@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "shared_data.hpp"
-#include <skip.hpp>
+#include "skip.hpp"
 
 #include <fstream>
 

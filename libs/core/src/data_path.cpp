@@ -82,7 +82,8 @@ DataPath DataPath::from_environment(const std::vector<fs::path>& data_dirs, cons
             std::error_code ec;
             // Only when it exists: a checkout without ../shared beside it is the usual case, not a mistake.
             if (is_folder(shared))
-                roots.push_back({fs::weakly_canonical(shared, ec), DataRoot::Kind::shared, "../shared beside the checkout"});
+                roots.push_back(
+                    {fs::weakly_canonical(shared, ec), DataRoot::Kind::shared, "../shared beside the checkout"});
         }
     }
     return DataPath(std::move(roots));

@@ -51,8 +51,7 @@ void apply_course_options(const CourseOptions& options, RenderJob& job);
 /// name the app gives ("textures/earth.jpg"), so each folder is a data root. Prints one warning line on stderr
 /// for each --data-dir or RTLAB_DATA_PATH folder that does not exist ("PROGRAM: warning: --data-dir '/x' does
 /// not exist").
-DataPath course_data_path(const CourseOptions& options, const std::filesystem::path& executable,
-                          const char* program);
+DataPath course_data_path(const CourseOptions& options, const std::filesystem::path& executable, const char* program);
 
 /// The running executable's path (/proc/self/exe), or `argv0` when that cannot be read.
 std::filesystem::path executable_path(const char* argv0);

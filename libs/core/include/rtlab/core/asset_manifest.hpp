@@ -14,11 +14,11 @@ inline constexpr std::string_view kSharedLayoutSource = "shared";
 
 /// \brief One row of the manifest.
 struct AssetEntry {
-    std::string name;             ///< logical name, relative to a data root
-    std::string source;           ///< a Debian package ("glmark2-data"), or kSharedLayoutSource
-    std::filesystem::path file;   ///< the package's file (absolute); relative to the folder for "shared"
-    std::string expected;         ///< "69666 triangles" or "2048x1024", checked by the tests
-    std::string credit;           ///< the credit line to print beside anything made from the file
+    std::string name;            ///< logical name, relative to a data root
+    std::string source;          ///< a Debian package ("glmark2-data"), or kSharedLayoutSource
+    std::filesystem::path file;  ///< the package's file (absolute); relative to the folder for "shared"
+    std::string expected;        ///< "69666 triangles" or "2048x1024", checked by the tests
+    std::string credit;          ///< the credit line to print beside anything made from the file
     [[nodiscard]] bool from_package() const { return source != kSharedLayoutSource; }
 };
 

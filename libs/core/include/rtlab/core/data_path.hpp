@@ -58,8 +58,8 @@ public:
     [[nodiscard]] std::optional<DataFile> find(const std::filesystem::path& name,
                                                const std::filesystem::path& first_folder = {}) const;
     /// Like find() for a folder (a cube map's faces); packages have none.
-    [[nodiscard]] std::optional<std::filesystem::path> find_folder(const std::filesystem::path& name,
-                                                                   const std::filesystem::path& first_folder = {}) const;
+    [[nodiscard]] std::optional<std::filesystem::path> find_folder(
+        const std::filesystem::path& name, const std::filesystem::path& first_folder = {}) const;
     /// Like find(), but a missing file is an rtlab::Error: "'NAME': file not found (looked in ...)".
     [[nodiscard]] DataFile require(const std::filesystem::path& name,
                                    const std::filesystem::path& first_folder = {}) const;
