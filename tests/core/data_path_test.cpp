@@ -1,6 +1,7 @@
 #include "rtlab/core/data_path.hpp"
 
 #include <catch2/catch.hpp>
+#include <scratch_files.hpp>
 #include <cstdlib>
 #include <fstream>
 
@@ -11,17 +12,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-    const fs::path d = fs::temp_directory_path() / ("rtlab_data_path_test_" + name);
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
+fs::path fresh_dir(const std::string& name) { return test::fresh_dir("rtlab_data_path_test_", name); }
 
-void touch(const fs::path& p) {
-    fs::create_directories(p.parent_path());
-    std::ofstream(p) << "x";
-}
+using test::touch;
 
 // A manifest of one package file that exists and one of a package that is not installed.
 std::vector<AssetEntry> test_manifest(const fs::path& root) {

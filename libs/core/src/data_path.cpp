@@ -12,32 +12,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool is_file(const fs::path& p) {
+// What is at `p` (not_found on any error): lookups ask this, never throw.
+fs::file_type type_of(const fs::path& p) {
     std::error_code ec;
-    return fs::is_regular_file(p, ec);
+    return fs::status(p, ec).type();
 }
 
-bool is_folder(const fs::path& p) {
-    std::error_code ec;
-    return fs::is_directory(p, ec);
-}
+bool is_file(const fs::path& p) { return type_of(p) == fs::file_type::regular; }
+bool is_folder(const fs::path& p) { return type_of(p) == fs::file_type::directory; }
 
 std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 std::string environment(std::string_view name) {
     const char* value = std::getenv(std::string(name).c_str());
     return value ? value : "";
-}
-
-std::vector<fs::path> split_path_list(const std::string& list) {
-    std::vector<fs::path> folders;
-    std::size_t start = 0;
-    while (start <= list.size()) {
-        const std::size_t end = std::min(list.find(':', start), list.size());
-        if (end > start) folders.emplace_back(list.substr(start, end - start));
-        start = end + 1;
-    }
-    return folders;
 }
 
 // The packages of the manifest, in order of first mention.
@@ -72,7 +60,8 @@ DataPath::DataPath(std::vector<DataRoot> roots, bool use_packages, std::vector<A
 DataPath DataPath::from_environment(const std::vector<fs::path>& data_dirs, const fs::path& executable) {
     std::vector<DataRoot> roots;
     for (const fs::path& d : data_dirs) roots.push_back({d, DataRoot::Kind::data_dir, "--data-dir"});
-    for (const fs::path& d : split_path_list(environment(kDataPathVariable)))
+    const SearchPath variable = SearchPath::from_environment({}, kDataPathVariable);
+    for (const fs::path& d : variable.folders())
         roots.push_back({d, DataRoot::Kind::data_path_variable, std::string(kDataPathVariable)});
     if (environment(kNoSharedVariable) != "1") {
         if (const std::string shared = environment(kSharedDirVariable); !shared.empty())
