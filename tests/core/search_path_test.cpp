@@ -1,9 +1,9 @@
 #include "rtlab/core/search_path.hpp"
 
 #include <catch2/catch.hpp>
-#include <scratch_files.hpp>
 #include <cstdlib>
 #include <fstream>
+#include <scratch_files.hpp>
 
 #include "rtlab/core/error.hpp"
 
