@@ -72,10 +72,14 @@ void apply_course_options(const CourseOptions& o, RenderJob& job) {
     s.seed = o.seed;
 }
 
-DataPath course_data_path(const CourseOptions& o, const fs::path& executable, const char* program) {
-    DataPath path = DataPath::from_environment(o.data_dirs, executable);
+DataPath app_data_path(const std::vector<fs::path>& data_dirs, const fs::path& executable, const char* program) {
+    DataPath path = DataPath::from_environment(data_dirs, executable);
     for (const std::string& line : missing_folder_warnings(path, program)) fmt::print(stderr, "{}\n", line);
     return path;
+}
+
+DataPath course_data_path(const CourseOptions& o, const fs::path& executable, const char* program) {
+    return app_data_path(o.data_dirs, executable, program);
 }
 
 fs::path executable_path(const char* argv0) {

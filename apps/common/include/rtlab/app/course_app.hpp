@@ -52,6 +52,9 @@ void apply_course_options(const CourseOptions& options, RenderJob& job);
 /// for each --data-dir or RTLAB_DATA_PATH folder that does not exist ("PROGRAM: warning: --data-dir '/x' does
 /// not exist").
 DataPath course_data_path(const CourseOptions& options, const std::filesystem::path& executable, const char* program);
+/// The same for any app (rtlab-render): its --data-dir folders, the executable, and the name its warnings start with.
+DataPath app_data_path(const std::vector<std::filesystem::path>& data_dirs, const std::filesystem::path& executable,
+                       const char* program);
 
 /// The running executable's path (/proc/self/exe), or `argv0` when that cannot be read.
 std::filesystem::path executable_path(const char* argv0);
