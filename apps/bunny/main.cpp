@@ -21,9 +21,14 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     if (const auto status = rtlab::app::parse_command_line(cli, argc, argv)) return *status;
     return rtlab::app::run_app("rtlab-bunny", [&] {
-        std::filesystem::path path = mesh_name;
-        if (!std::filesystem::is_regular_file(path))
-            path = rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0])).require(mesh_name);
+        const rtlab::DataPath data =
+            rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0]), "rtlab-bunny");
+        // A mesh named by a path that exists is taken as it is; else the name is looked up on the data path.
+        const rtlab::DataFile file = std::filesystem::is_regular_file(mesh_name)
+                                         ? rtlab::DataFile{mesh_name, "as given", {}}
+                                         : data.require(mesh_name);
+        const std::filesystem::path& path = file.path;
+        if (!options.quiet) fmt::print("{}\n", rtlab::describe_sources({{mesh_name, file}}));
         using Clock = std::chrono::steady_clock;
         auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
         std::shared_ptr<const rtlab::TriangleMesh> mesh;

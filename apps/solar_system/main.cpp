@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
         const int count = std::max(frames, 1);
         const rtlab::solar::FrameRange r = rtlab::solar::parse_frame_range(range, count);
         (void)rtlab::output_format(options.output);  // a bad -o before the textures load, not after
-        const auto data = rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0]));
+        const auto data =
+            rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0]), "rtlab-solar-system");
         const rtlab::solar::SolarAssets assets = rtlab::solar::load_solar_assets(data, procedural);
         if (!options.quiet) fmt::print("{}\n", assets.note);
         for (int f = r.first; f < r.last; ++f) {

@@ -10,6 +10,9 @@ int main(int argc, char** argv) {
     rtlab::app::add_course_options(cli, options);
     if (const auto status = rtlab::app::parse_command_line(cli, argc, argv)) return *status;
     return rtlab::app::run_app("rtlab-whitted", [&] {
+        // The scene reads no data file, but --data-dir is a common flag: a folder that is not there is still
+        // worth a warning, as in every app.
+        (void)rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0]), "rtlab-whitted");
         rtlab::RenderJob job = rtlab::whitted::make_whitted_job(options.width, options.height);
         rtlab::app::apply_course_options(options, job);
         return rtlab::app::run_course_render(job, options, options.output, "whitted").interrupted ? 130 : 0;

@@ -37,7 +37,8 @@ TEST_CASE("nesting deeper than the bound is refused at its first bracket too dee
     CHECK_THAT(msg, Catch::Contains("nested more than 64 levels"));
     CHECK_THAT(msg, Catch::Contains("t.json:1:65"));
     // Inside a scene's own value, at the key that holds it.
-    const std::string in_scene = R"({"version": 1, "description": )" + std::string(70, '[') + std::string(70, ']') + "}";
+    const std::string in_scene =
+        R"({"version": 1, "description": )" + std::string(70, '[') + std::string(70, ']') + "}";
     CHECK_THAT(load_error(in_scene), Catch::Contains("nested more than 64 levels"));
 }
 
@@ -94,8 +95,9 @@ TEST_CASE("an unknown key is told the nearest declared key", "[scene_loader]") {
         "materials": [{"name": "m", "type": "phong", "kdd": [1, 0, 0]}],
         "shapes": [{"type": "sphere", "material": "m"}]})";
     const std::string msg = load_error(text);
-    CHECK_THAT(msg, Catch::Contains("/materials/0/kdd: unknown key 'kdd' for material type 'phong'; did you mean 'kd'?"));
-    CHECK_THAT(msg, Catch::Contains("t.json:2:63"));
+    CHECK_THAT(msg,
+               Catch::Contains("/materials/0/kdd: unknown key 'kdd' for material type 'phong'; did you mean 'kd'?"));
+    CHECK_THAT(msg, Catch::Contains("t.json:2:54"));
 }
 
 TEST_CASE("an unknown type is told the nearest registered type", "[scene_loader]") {

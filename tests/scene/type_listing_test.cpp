@@ -38,7 +38,8 @@ SceneRegistries with_stripes() {
     r.textures.add(
         "stripes",
         [](const Params& p) {
-            return std::make_shared<Stripes>(p.get_string("direction", "across") == "along", p.get_float("width", 0.1f));
+            return std::make_shared<Stripes>(p.get_string("direction", "across") == "along",
+                                             p.get_float("width", 0.1f));
         },
         std::move(spec));
     return r;
@@ -46,7 +47,8 @@ SceneRegistries with_stripes() {
 
 std::string scene_with(const std::string& texture) {
     return R"({"version": 1, "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
-  "textures": [)" + texture + R"(],
+  "textures": [)" +
+           texture + R"(],
   "materials": [{"name": "m", "type": "lambert", "albedo": "s"}],
   "shapes": [{"type": "sphere", "material": "m"}]})";
 }
@@ -57,9 +59,8 @@ TEST_CASE("a new texture type with a word parameter loads through its declaratio
     SceneRegistries r = with_stripes();
     SceneLoadOptions options;
     options.registries = &r;
-    const LoadedScene s =
-        parse_scene(scene_with(R"({"name": "s", "type": "stripes", "direction": "along", "width": 0.25})"), "t.json",
-                    options);
+    const LoadedScene s = parse_scene(
+        scene_with(R"({"name": "s", "type": "stripes", "direction": "along", "width": 0.25})"), "t.json", options);
     CHECK(s.job.scene->object_count() == 1);
 }
 
@@ -74,9 +75,9 @@ TEST_CASE("an error in a new type's parameter points at the key's line and colum
         FAIL("loaded");
     } catch (const Error& e) {
         const std::string msg = e.what();
-        CHECK_THAT(msg, Catch::Contains("t.json:4:20: /textures/0/direction: unknown value 'alnog' for 'direction'; "
+        CHECK_THAT(msg, Catch::Contains("t.json:3:7: /textures/0/direction: unknown value 'alnog' for 'direction'; "
                                         "did you mean 'along'?"));
-        CHECK_THAT(msg, Catch::Contains("t.json:4:38: /textures/0/width: must be in [1e-06, 1], not 2"));
+        CHECK_THAT(msg, Catch::Contains("t.json:3:29: /textures/0/width: must be in [1e-06, 1], not 2"));
     }
 }
 

@@ -72,29 +72,14 @@ void apply_course_options(const CourseOptions& o, RenderJob& job) {
     s.seed = o.seed;
 }
 
-namespace {
-
-// The checkout the executable was built in: build/<preset>/bin/ lies inside it.
-std::optional<fs::path> source_checkout(const fs::path& executable) {
-    std::error_code ec;
-    for (fs::path dir = executable.parent_path(); !dir.empty(); dir = dir.parent_path()) {
-        if (fs::is_regular_file(dir / "CMakePresets.json", ec) && fs::is_directory(dir / "libs", ec)) return dir;
-        if (dir == dir.parent_path()) break;
-    }
-    return std::nullopt;
+DataPath app_data_path(const std::vector<fs::path>& data_dirs, const fs::path& executable, const char* program) {
+    DataPath path = DataPath::from_environment(data_dirs, executable);
+    for (const std::string& line : missing_folder_warnings(path, program)) fmt::print(stderr, "{}\n", line);
+    return path;
 }
 
-}  // namespace
-
-SearchPath course_data_path(const CourseOptions& o, const fs::path& executable) {
-    SearchPath path = SearchPath::from_environment(o.data_dirs, kDataPathVariable);
-    if (const char* shared = std::getenv("RTLAB_SHARED_DIR"); shared && *shared) path.append(shared);
-    if (const auto checkout = source_checkout(executable)) {
-        std::error_code ec;
-        const fs::path shared = checkout->parent_path() / "shared";
-        if (fs::is_directory(shared, ec)) path.append(fs::weakly_canonical(shared, ec));
-    }
-    return path;
+DataPath course_data_path(const CourseOptions& o, const fs::path& executable, const char* program) {
+    return app_data_path(o.data_dirs, executable, program);
 }
 
 fs::path executable_path(const char* argv0) {

@@ -99,7 +99,12 @@ std::string describe_param(const ParamSpec& p) {
     else if (!p.default_value.empty())
         what += ", default " + p.default_value;
     const bool bounded = std::isfinite(p.lo) || std::isfinite(p.hi);
-    if (bounded) what += ", in [" + number_text(p.lo) + ", " + number_text(p.hi) + "]";
+    if (bounded && std::isinf(p.hi))
+        what += ", >= " + number_text(p.lo);
+    else if (bounded && std::isinf(p.lo))
+        what += ", <= " + number_text(p.hi);
+    else if (bounded)
+        what += ", in [" + number_text(p.lo) + ", " + number_text(p.hi) + "]";
     if (!p.unit.empty()) what += ", " + p.unit;
     return p.name + " (" + what + ")" + (p.doc.empty() ? "" : ": " + p.doc);
 }

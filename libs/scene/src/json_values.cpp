@@ -3,6 +3,7 @@
 #include <rtlab/core/spelling.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 namespace rtlab::scene_detail {
@@ -13,11 +14,17 @@ std::string join(const std::vector<std::string>& words) {
     return out.empty() ? "(none)" : out;
 }
 
+std::string number_text(double v) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return {buffer, result.ptr};
+}
+
 std::string range_text(double lo, double hi) {
     if (std::isinf(lo) && std::isinf(hi)) return "finite";
-    if (std::isinf(hi)) return ">= " + Json(lo).dump();
-    if (std::isinf(lo)) return "<= " + Json(hi).dump();
-    return "in [" + Json(lo).dump() + ", " + Json(hi).dump() + "]";
+    if (std::isinf(hi)) return ">= " + number_text(lo);
+    if (std::isinf(lo)) return "<= " + number_text(hi);
+    return "in [" + number_text(lo) + ", " + number_text(hi) + "]";
 }
 
 bool expect_object(Diagnostics& diag, const Json& v, const std::string& p, const std::string& what) {
@@ -55,7 +62,8 @@ std::optional<std::int64_t> read_integer(Diagnostics& diag, const Json& v, const
     }
     const double x = v.get<double>();
     if (!(x >= static_cast<double>(lo) && x <= static_cast<double>(hi))) {
-        diag.error(p, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], not " + v.dump());
+        diag.error(p,
+                   "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], not " + v.dump());
         return std::nullopt;
     }
     return v.is_number_unsigned() ? static_cast<std::int64_t>(v.get<std::uint64_t>()) : v.get<std::int64_t>();

@@ -28,7 +28,9 @@ std::optional<RGB> read_colour(Diagnostics& diag, const Json& v, const std::stri
 
 /// "a, b, c", or "(none)".
 std::string join(const std::vector<std::string>& words);
-/// "[lo, hi]", ">= lo" or "<= hi" for a range with infinite ends.
+/// The shortest text that reads back as v ("0", "64", "1e-06").
+std::string number_text(double v);
+/// "in [lo, hi]", ">= lo" or "<= hi" for a range with infinite ends.
 std::string range_text(double lo, double hi);
 
 }  // namespace rtlab::scene_detail

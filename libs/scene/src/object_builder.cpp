@@ -173,7 +173,7 @@ bool read_params(LoadContext& ctx, const TypeSpec& spec, Kind kind, const std::s
 }
 
 void report_build_error(LoadContext& ctx, Kind kind, const std::string& type, const Json& obj, const std::string& p,
-                        const std::exception& e) {
+                        const std::exception& e, const BuildOptions& options) {
     const auto* param = dynamic_cast<const ParamError*>(&e);
     if (!param) {
         if (dynamic_cast<const Error*>(&e))
@@ -189,7 +189,8 @@ void report_build_error(LoadContext& ctx, Kind kind, const std::string& type, co
                       "key '" + key + "' is declared by " + kind_name(kind) + " type '" + type + "' but not used");
         return;
     }
-    const std::string key = param->keys().empty() ? std::string() : param->keys().front();
+    std::string key = param->keys().empty() ? std::string() : param->keys().front();
+    if (auto it = options.written_as.find(key); it != options.written_as.end()) key = it->second;
     ctx.error(!key.empty() && obj.contains(key) ? pointer_append(p, key) : p, e.what());
 }
 

@@ -8,6 +8,7 @@
 #include "load_context.hpp"
 
 #include <exception>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@ struct BuildOptions {
     std::vector<std::string> loader_keys;  ///< keys the loader reads itself ("name", "material", ...)
     std::vector<std::string> left_out;     ///< declared keys not passed on (a texture's files, when it falls back)
     Params extra;                          ///< parameters the loader sets (an instance's matrix)
+    /// Parameters the loader set from a key of another name ("bake" from "fallback"): a factory's error
+    /// about the parameter is shown at that key.
+    std::map<std::string, std::string> written_as;
 };
 
 /// The object's "type", checked against the registered names; nullopt (reported) when missing or unknown.
@@ -34,7 +38,7 @@ bool convert_param(LoadContext& ctx, const ParamSpec& spec, const Json& v, const
 
 /// A factory's exception, reported at the key it names (rtlab::ParamError) or at the object.
 void report_build_error(LoadContext& ctx, Kind kind, const std::string& type, const Json& obj, const std::string& p,
-                        const std::exception& e);
+                        const std::exception& e, const BuildOptions& options = {});
 
 template <class Base>
 std::shared_ptr<Base> build_object(LoadContext& ctx, const Registry<Base>& registry, Kind kind, const Json& obj,
@@ -49,7 +53,7 @@ std::shared_ptr<Base> build_object(LoadContext& ctx, const Registry<Base>& regis
         if (!object) ctx.error(p, std::string(kind_name(kind)) + " type '" + *type + "' made nothing");
         return object;
     } catch (const std::exception& e) {
-        report_build_error(ctx, kind, *type, obj, p, e);
+        report_build_error(ctx, kind, *type, obj, p, e, options);
     }
     return nullptr;
 }

@@ -50,7 +50,8 @@ template <class T>
 std::optional<std::string> new_name(LoadContext& ctx, const Json& obj, const std::string& p,
                                     const std::map<std::string, Named<T>>& taken, Kind kind, bool required) {
     if (!obj.contains("name")) {
-        if (required) ctx.error(p, std::string("missing key 'name': a ") + kind_name(kind) + " is referred to by its name");
+        if (required)
+            ctx.error(p, std::string("missing key 'name': a ") + kind_name(kind) + " is referred to by its name");
         return std::nullopt;
     }
     auto name = read_string(ctx.diag, obj["name"], pointer_append(p, "name"));
@@ -94,7 +95,8 @@ void read_plugins(LoadContext& ctx, const Json& doc) {
 void read_version(LoadContext& ctx, const Json& doc) {
     if (!doc.contains("version")) {
         ctx.error("", "missing key 'version' (this loader reads version " + std::to_string(kSceneFormatVersion) + ")");
-    } else if (auto v = read_integer(ctx.diag, doc["version"], "/version", 0, 1000000); v && *v != kSceneFormatVersion) {
+    } else if (auto v = read_integer(ctx.diag, doc["version"], "/version", 0, 1000000);
+               v && *v != kSceneFormatVersion) {
         ctx.error("/version", "version " + std::to_string(*v) + " is not supported (this loader reads version " +
                                   std::to_string(kSceneFormatVersion) + ")");
     }

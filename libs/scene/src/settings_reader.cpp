@@ -66,8 +66,10 @@ bool read_size(LoadContext& ctx, const Json& r, const std::string& p, std::int64
         }
     }
     const SceneOverrides& o = ctx.options.overrides;
-    if (o.width && !o.height) height = std::max<std::int64_t>(1, std::llround(static_cast<double>(height) * *o.width / width));
-    if (o.height && !o.width) width = std::max<std::int64_t>(1, std::llround(static_cast<double>(width) * *o.height / height));
+    if (o.width && !o.height)
+        height = std::max<std::int64_t>(1, std::llround(static_cast<double>(height) * *o.width / width));
+    if (o.height && !o.width)
+        width = std::max<std::int64_t>(1, std::llround(static_cast<double>(width) * *o.height / height));
     if (o.width) width = *o.width;
     if (o.height) height = *o.height;
     if (o.width || o.height) {
@@ -94,11 +96,12 @@ void read_sampling(LoadContext& ctx, const Json& r, const std::string& p) {
         }
     }
     if (r.contains("spp"))
-        if (auto v = read_integer(ctx.diag, r["spp"], at("spp"), 1, kMaxSamplesPerPixel)) settings.spp = static_cast<int>(*v);
+        if (auto v = read_integer(ctx.diag, r["spp"], at("spp"), 1, kMaxSamplesPerPixel))
+            settings.spp = static_cast<int>(*v);
     // The command line checks its own values; a program passing overrides directly is told here.
     if (o.spp && (*o.spp < 1 || *o.spp > kMaxSamplesPerPixel))
-        ctx.diag.error_at(0, "--spp: must be in [1, " + std::to_string(kMaxSamplesPerPixel) + "], not " +
-                                 std::to_string(*o.spp));
+        ctx.diag.error_at(
+            0, "--spp: must be in [1, " + std::to_string(kMaxSamplesPerPixel) + "], not " + std::to_string(*o.spp));
     else if (o.spp)
         settings.spp = *o.spp;
     if (r.contains("seed"))
@@ -106,7 +109,8 @@ void read_sampling(LoadContext& ctx, const Json& r, const std::string& p) {
             settings.seed = static_cast<std::uint64_t>(*v);
     if (o.seed) settings.seed = *o.seed;
     if (r.contains("threads"))
-        if (auto v = read_integer(ctx.diag, r["threads"], at("threads"), 0, 1024)) settings.threads = static_cast<int>(*v);
+        if (auto v = read_integer(ctx.diag, r["threads"], at("threads"), 0, 1024))
+            settings.threads = static_cast<int>(*v);
     if (o.threads && (*o.threads < 0 || *o.threads > 1024))
         ctx.diag.error_at(0, "--threads: must be in [0, 1024] (0: all cores)");
     else if (o.threads)
@@ -117,7 +121,8 @@ void read_whitted(LoadContext& ctx, const Json& r, const std::string& p) {
     WhittedOptions& whitted = ctx.out.job.whitted;
     auto at = [&](const char* key) { return pointer_append(p, key); };
     if (r.contains("max_depth"))
-        if (auto v = read_integer(ctx.diag, r["max_depth"], at("max_depth"), 0, 100)) whitted.max_depth = static_cast<int>(*v);
+        if (auto v = read_integer(ctx.diag, r["max_depth"], at("max_depth"), 0, 100))
+            whitted.max_depth = static_cast<int>(*v);
     if (ctx.options.overrides.max_depth) whitted.max_depth = *ctx.options.overrides.max_depth;
     if (r.contains("min_weight"))
         if (auto v = read_number(ctx.diag, r["min_weight"], at("min_weight"), 0.0, 1.0))
@@ -137,7 +142,8 @@ void read_whitted(LoadContext& ctx, const Json& r, const std::string& p) {
                                                 "; expected physical or classic");
         }
     }
-    if (r.contains("background") && r.contains("skybox")) ctx.error(at("skybox"), "give 'background' or 'skybox', not both");
+    if (r.contains("background") && r.contains("skybox"))
+        ctx.error(at("skybox"), "give 'background' or 'skybox', not both");
     if (r.contains("background"))
         if (auto c = read_colour(ctx.diag, r["background"], at("background"))) whitted.background = *c;
     if (!r.contains("skybox")) return;
@@ -145,8 +151,8 @@ void read_whitted(LoadContext& ctx, const Json& r, const std::string& p) {
     if (sky.is_string()) {
         auto it = ctx.textures.find(sky.get<std::string>());
         if (it == ctx.textures.end())
-            ctx.error(at("skybox"), "no texture named '" + sky.get<std::string>() + "' (defined: " +
-                                        join(names_of(ctx.textures)) + ")");
+            ctx.error(at("skybox"), "no texture named '" + sky.get<std::string>() +
+                                        "' (defined: " + join(names_of(ctx.textures)) + ")");
         else
             whitted.environment = it->second.object;
     } else if (sky.is_object()) {
@@ -154,7 +160,8 @@ void read_whitted(LoadContext& ctx, const Json& r, const std::string& p) {
     } else {
         ctx.error(at("skybox"), "expected a texture name or an inline texture (a cubemap), not " + describe(sky));
     }
-    if (auto a = ctx.auto_levels.find(whitted.environment.get()); a != ctx.auto_levels.end()) a->second.environment = true;
+    if (auto a = ctx.auto_levels.find(whitted.environment.get()); a != ctx.auto_levels.end())
+        a->second.environment = true;
 }
 
 void read_tonemap(LoadContext& ctx, const Json& r, const std::string& p) {
@@ -200,7 +207,8 @@ void read_tonemap(LoadContext& ctx, const Json& r, const std::string& p) {
         else if (o.tonemap)
             ctx.diag.error_at(0, "--tonemap: unknown tone operator '" + name + "'; known: " + known);
         else
-            ctx.error(p, "unknown tone operator '" + name + "'" + did_you_mean(name, registry.names()) + "; known: " + known);
+            ctx.error(
+                p, "unknown tone operator '" + name + "'" + did_you_mean(name, registry.names()) + "; known: " + known);
     }
 }
 
@@ -222,7 +230,8 @@ std::optional<CameraRead> read_camera(LoadContext& ctx, const Json& doc) {
                 out.thin_lens = true;
             else if (*t != "pinhole")
                 ctx.error("/camera/type", "unknown camera type '" + *t + "'" +
-                                              did_you_mean(*t, {"pinhole", "thin_lens"}) + "; known: pinhole, thin_lens");
+                                              did_you_mean(*t, {"pinhole", "thin_lens"}) +
+                                              "; known: pinhole, thin_lens");
         }
     }
     // A value that failed to read leaves its default, which could make a second, misleading error ("eye and

@@ -20,7 +20,8 @@ std::optional<Mat4> read_matrix(LoadContext& ctx, const Json& v, const std::stri
         return row.is_array() && row.size() == n &&
                std::all_of(row.begin(), row.end(), [](const Json& x) { return x.is_number(); });
     };
-    if (v.is_array() && v.size() == 4 && std::all_of(v.begin(), v.end(), [&](const Json& r) { return numbers(r, 4); })) {
+    if (v.is_array() && v.size() == 4 &&
+        std::all_of(v.begin(), v.end(), [&](const Json& r) { return numbers(r, 4); })) {
         for (const Json& row : v)
             for (const Json& x : row) values.push_back(x.get<double>());
     } else if (numbers(v, 16)) {
@@ -35,7 +36,8 @@ std::optional<Mat4> read_matrix(LoadContext& ctx, const Json& v, const std::stri
     }
     Mat4 m(1.0f);
     for (int row = 0; row < 4; ++row)
-        for (int col = 0; col < 4; ++col) m[col][row] = static_cast<float>(values[static_cast<std::size_t>(row * 4 + col)]);
+        for (int col = 0; col < 4; ++col)
+            m[col][row] = static_cast<float>(values[static_cast<std::size_t>(row * 4 + col)]);
     return m;
 }
 
@@ -61,7 +63,8 @@ std::optional<Mat4> read_transform_object(LoadContext& ctx, const Json& v, const
     }
     if (v.contains("scale")) {
         const std::string sp = pointer_append(p, "scale");
-        std::optional<Vec3> k = v["scale"].is_number() ? Vec3(v["scale"].get<float>()) : read_vec3(ctx.diag, v["scale"], sp);
+        std::optional<Vec3> k =
+            v["scale"].is_number() ? Vec3(v["scale"].get<float>()) : read_vec3(ctx.diag, v["scale"], sp);
         if (k && (!is_finite(*k) || k->x == 0.0f || k->y == 0.0f || k->z == 0.0f)) {
             ctx.error(sp, "a scale must be finite and non-zero, not " + v["scale"].dump());
             k.reset();
@@ -110,7 +113,8 @@ void note_footprint(LoadContext& ctx, const Shape& shape, const Material* materi
         if (!where) {
             ctx.error(pointer_append(p, "material"),
                       "uses a texture with \"lod\": \"auto\", which is worked out for shapes with a uv footprint "
-                      "(spheres, disks), not a '" + type + "'; give that texture a number as its lod");
+                      "(spheres, disks), not a '" +
+                          type + "'; give that texture a number as its lod");
             return;
         }
         a->second.users.push_back(*where);
@@ -138,7 +142,8 @@ std::shared_ptr<const Material> read_material(LoadContext& ctx, const Json& m, c
     ctx.collecting = &uses;
     BuildOptions options;
     if (named) options.loader_keys.push_back("name");
-    std::shared_ptr<const Material> material = build_object(ctx, ctx.registries.materials, Kind::material, m, p, options);
+    std::shared_ptr<const Material> material =
+        build_object(ctx, ctx.registries.materials, Kind::material, m, p, options);
     ctx.collecting = nullptr;
     if (material) ctx.material_uses[material.get()] = std::move(uses);
     return material;
@@ -161,7 +166,8 @@ void read_shape(LoadContext& ctx, const Json& s, const std::string& p, std::vect
     SurfaceFlags flags;
     bool visible = true, ok = true;
     if (s.contains("casts_shadows"))
-        if (auto b = read_boolean(ctx.diag, s["casts_shadows"], pointer_append(p, "casts_shadows"))) flags.casts_shadows = *b;
+        if (auto b = read_boolean(ctx.diag, s["casts_shadows"], pointer_append(p, "casts_shadows")))
+            flags.casts_shadows = *b;
     if (s.contains("reversed"))
         if (auto b = read_boolean(ctx.diag, s["reversed"], pointer_append(p, "reversed"))) flags.reversed = *b;
     if (s.contains("visible"))

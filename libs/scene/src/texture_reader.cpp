@@ -37,6 +37,8 @@ std::optional<std::string> missing_files(LoadContext& ctx, const Json& v, const 
 bool read_fallback(LoadContext& ctx, const Json& v, const std::string& p, BuildOptions& options) {
     const std::string fp = pointer_append(p, "fallback"), sp = pointer_append(p, "fallback_size");
     options.loader_keys.insert(options.loader_keys.end(), {"fallback", "fallback_size"});
+    // The factory's errors about what the loader made of these keys belong at the keys.
+    options.written_as = {{"bake", "fallback"}, {"bake_size", "fallback_size"}};
     if (!v.contains("fallback")) {
         ctx.error(sp, "'fallback_size' is only used with 'fallback'");
         return false;
@@ -45,8 +47,10 @@ bool read_fallback(LoadContext& ctx, const Json& v, const std::string& p, BuildO
     const TypeSpec* spec = ctx.registries.textures.contains(type) ? &ctx.registries.textures.spec(type) : nullptr;
     const auto files = spec ? file_params(*spec) : std::vector<const ParamSpec*>{};
     if (!spec || files.empty() || !spec->find("bake")) {
-        ctx.error(fp, "'fallback' stands in for files that are not found: it is for textures that read files "
-                      "(image, cubemap), not '" + type + "'");
+        ctx.error(fp,
+                  "'fallback' stands in for files that are not found: it is for textures that read files "
+                  "(image, cubemap), not '" +
+                      type + "'");
         return false;
     }
     std::shared_ptr<Texture> fallback;
@@ -94,7 +98,10 @@ std::shared_ptr<Texture> read_texture(LoadContext& ctx, const Json& v, const std
     BuildOptions options;
     if (named) options.loader_keys.push_back("name");
     bool auto_lod = false;
-    if (v.contains("lod") && v["lod"].is_string()) {
+    // "auto" for any texture type that declares a level of detail; others are told "lod" is not theirs.
+    const std::string type = v.contains("type") && v["type"].is_string() ? v["type"].get<std::string>() : "";
+    const bool has_levels = ctx.registries.textures.contains(type) && ctx.registries.textures.spec(type).find("lod");
+    if (has_levels && v.contains("lod") && v["lod"].is_string()) {
         if (v["lod"] != "auto") {
             ctx.error(pointer_append(p, "lod"),
                       "expected a level of detail (a number >= 0) or \"auto\", not " + v["lod"].dump());

@@ -51,7 +51,9 @@ std::string values_text(const ParamSpec& p) {
         return out;
     }
     if (std::isinf(p.lo) && std::isinf(p.hi)) return p.unit;
-    std::string r = "[" + number_text(p.lo) + ", " + number_text(p.hi) + "]";
+    std::string r = std::isinf(p.hi)   ? ">= " + number_text(p.lo)
+                    : std::isinf(p.lo) ? "<= " + number_text(p.hi)
+                                       : "[" + number_text(p.lo) + ", " + number_text(p.hi) + "]";
     return p.unit.empty() ? r : r + " " + p.unit;
 }
 

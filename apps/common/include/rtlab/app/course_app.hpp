@@ -1,7 +1,7 @@
 #pragma once
 /// \brief What the course apps (rtlab-whitted, rtlab-solar-system, rtlab-bunny) share: one set of command-line
 /// flags, the data search path, and running a render job to a file with the progress bar and Ctrl-C.
-#include <rtlab/core/search_path.hpp>
+#include <rtlab/core/data_path.hpp>
 #include <rtlab/render/render_job.hpp>
 
 #include <CLI/CLI.hpp>
@@ -45,15 +45,16 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
 /// the flags given. Throws rtlab::Error for an unknown --aa name, or --spp, --depth out of range.
 void apply_course_options(const CourseOptions& options, RenderJob& job);
 
-/// The folders data files (textures/..., models/...) are looked up in, in this order:
-///   1. every --data-dir, as given;
-///   2. the ':'-separated folders of RTLAB_DATA_PATH (kDataPathVariable);
-///   3. RTLAB_SHARED_DIR, when set (the variable the tests and scripts use for ../shared);
-///   4. `shared` beside the source checkout the executable was built in: the first folder above the
-///      executable holding CMakePresets.json and libs/ (build/<preset>/bin/ sits inside it), if ../shared
-///      exists next to it.
-/// A file is looked up by the name the app gives ("textures/earth.jpg"), so each folder is a shared root.
-SearchPath course_data_path(const CourseOptions& options, const std::filesystem::path& executable);
+/// The data path of a course app (rtlab::DataPath::from_environment): every --data-dir, RTLAB_DATA_PATH,
+/// RTLAB_SHARED_DIR and the ../shared beside the checkout the executable was built in (neither when
+/// RTLAB_NO_SHARED=1), then the files of the Debian data packages (data/assets.tsv). A file is looked up by the
+/// name the app gives ("textures/earth.jpg"), so each folder is a data root. Prints one warning line on stderr
+/// for each --data-dir or RTLAB_DATA_PATH folder that does not exist ("PROGRAM: warning: --data-dir '/x' does
+/// not exist").
+DataPath course_data_path(const CourseOptions& options, const std::filesystem::path& executable, const char* program);
+/// The same for any app (rtlab-render): its --data-dir folders, the executable, and the name its warnings start with.
+DataPath app_data_path(const std::vector<std::filesystem::path>& data_dirs, const std::filesystem::path& executable,
+                       const char* program);
 
 /// The running executable's path (/proc/self/exe), or `argv0` when that cannot be read.
 std::filesystem::path executable_path(const char* argv0);
