@@ -95,16 +95,18 @@ CommandLine::CommandLine(std::string program, const std::string& description)
     m_app.allow_extras();
 }
 
-void CommandLine::add_checked(const std::string& flags, const std::string& help,
+void CommandLine::add_checked(const std::string& flags, const std::string& type, const std::string& help,
                               std::function<void(const std::string&, const std::string&)> apply) {
     std::string& raw = m_raw.emplace_back();
-    CLI::Option* option = m_app.add_option(flags, raw, help)->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    CLI::Option* option = m_app.add_option(flags, raw, help)
+                              ->type_name(type)
+                              ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     m_checks.push_back({option, display_name(flags), &raw, std::move(apply)});
 }
 
 void CommandLine::add_integer(const std::string& flags, std::optional<int>& target, int lo, int hi,
                               const std::string& help) {
-    add_checked(flags, help, [&target, lo, hi](const std::string& name, const std::string& raw) {
+    add_checked(flags, "INT", help, [&target, lo, hi](const std::string& name, const std::string& raw) {
         const std::int64_t v = whole_number(name, raw);
         if (v < lo || v > hi) throw UsageError(fmt::format("{}: must be in [{}, {}], not {}", name, lo, hi, raw));
         target = static_cast<int>(v);
@@ -113,7 +115,7 @@ void CommandLine::add_integer(const std::string& flags, std::optional<int>& targ
 
 void CommandLine::add_number(const std::string& flags, std::optional<double>& target, double lo, double hi,
                              const std::string& help) {
-    add_checked(flags, help, [&target, lo, hi](const std::string& name, const std::string& raw) {
+    add_checked(flags, "NUMBER", help, [&target, lo, hi](const std::string& name, const std::string& raw) {
         const double v = real_number(name, raw);
         if (v < lo || v > hi) throw UsageError(fmt::format("{}: must be in [{}, {}], not {}", name, lo, hi, raw));
         target = v;
@@ -122,7 +124,7 @@ void CommandLine::add_number(const std::string& flags, std::optional<double>& ta
 
 void CommandLine::add_number(const std::string& flags, std::optional<float>& target, double lo, double hi,
                              const std::string& help) {
-    add_checked(flags, help, [&target, lo, hi](const std::string& name, const std::string& raw) {
+    add_checked(flags, "NUMBER", help, [&target, lo, hi](const std::string& name, const std::string& raw) {
         const double v = real_number(name, raw);
         if (v < lo || v > hi) throw UsageError(fmt::format("{}: must be in [{}, {}], not {}", name, lo, hi, raw));
         target = static_cast<float>(v);
@@ -131,7 +133,8 @@ void CommandLine::add_number(const std::string& flags, std::optional<float>& tar
 
 void CommandLine::add_word(const std::string& flags, std::optional<std::string>& target,
                            std::vector<std::string> words, const std::string& help) {
-    add_checked(flags, help + " (" + join(words) + ")",
+    const std::string text = help + " (" + join(words) + ")";
+    add_checked(flags, "WORD", text,
                 [&target, words = std::move(words)](const std::string& name, const std::string& raw) {
                     target = checked_word(name, raw, words);
                 });
@@ -139,7 +142,8 @@ void CommandLine::add_word(const std::string& flags, std::optional<std::string>&
 
 void CommandLine::add_word(const std::string& flags, std::string& target, std::vector<std::string> words,
                            const std::string& help) {
-    add_checked(flags, help + " (" + join(words) + "; default " + target + ")",
+    const std::string text = help + " (" + join(words) + "; default " + target + ")";
+    add_checked(flags, "WORD", text,
                 [&target, words = std::move(words)](const std::string& name, const std::string& raw) {
                     target = checked_word(name, raw, words);
                 });
@@ -147,7 +151,7 @@ void CommandLine::add_word(const std::string& flags, std::string& target, std::v
 
 void CommandLine::add_text(const std::string& flags, std::string& target, const std::string& help,
                            std::function<void(const std::string&)> check) {
-    add_checked(flags, help, [&target, check = std::move(check)](const std::string& name, const std::string& raw) {
+    add_checked(flags, "TEXT", help, [&target, check = std::move(check)](const std::string& name, const std::string& raw) {
         if (raw.empty()) throw UsageError(name + ": expected a value, not an empty one");
         if (check) {
             try {
@@ -168,6 +172,7 @@ void CommandLine::add_list(const std::string& flags, std::vector<fs::path>& targ
     m_app.add_option_function<std::vector<std::string>>(
             flags, [&target](const std::vector<std::string>& values) { target.assign(values.begin(), values.end()); },
             help)
+        ->type_name("PATH")
         ->expected(1)
         ->allow_extra_args(false)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -194,9 +199,9 @@ void CommandLine::add_common(CommonOptions& o, const std::vector<std::string>& t
     const std::optional<int> default_width = o.width, default_height = o.height;
     const std::string keeps = default_width ? fmt::format("; default {}x{}", *default_width, *default_height)
                                             : std::string("; default: the scene's");
-    add_checked("--width", "image width in pixels (alone: keeps the aspect ratio" + keeps + ")",
+    add_checked("--width", "INT", "image width in pixels (alone: keeps the aspect ratio" + keeps + ")",
                 [&o](const std::string& name, const std::string& raw) { o.width = image_side(name, raw); });
-    add_checked("--height", "image height in pixels (alone: keeps the aspect ratio)",
+    add_checked("--height", "INT", "image height in pixels (alone: keeps the aspect ratio)",
                 [&o](const std::string& name, const std::string& raw) { o.height = image_side(name, raw); });
     add_word("--aa", o.aa, {"none", "grid", "random", "jittered", "adaptive"}, "anti-aliasing (default: the scene's)");
     add_integer("--spp", o.spp, 1, kMaxSamplesPerPixel,
@@ -207,7 +212,7 @@ void CommandLine::add_common(CommonOptions& o, const std::vector<std::string>& t
     add_integer("--aa-depth", o.aa_depth, 0, kMaxAdaptiveDepth, "adaptive: subdivision depth (default: the scene's)");
     add_integer("--depth", o.max_depth, 0, 64, "reflection and refraction depth (default: the scene's)");
     add_integer("--threads", o.threads, 0, 1024, "render threads (0: every core); the image does not depend on it");
-    add_checked("--seed", "seed of every random sample (the image is the same for the same seed)",
+    add_checked("--seed", "INT", "seed of every random sample (the image is the same for the same seed)",
                 [&o](const std::string& name, const std::string& raw) {
                     std::uint64_t v = 0;
                     const auto [ptr, ec] = std::from_chars(raw.data(), raw.data() + raw.size(), v);
@@ -221,15 +226,16 @@ void CommandLine::add_common(CommonOptions& o, const std::vector<std::string>& t
     add_flag("-q,--quiet", o.quiet, "no progress bar and no summary");
     add_list("--data-dir", o.data_dirs, "folder searched first for the data files (repeatable)");
 
-    m_after.push_back([&o, default_width, default_height] {
+    const CLI::Option* width_flag = m_app.get_option("--width");
+    const CLI::Option* height_flag = m_app.get_option("--height");
+    m_after.push_back([&o, default_width, default_height, width_flag, height_flag] {
         // One side alone keeps the default's aspect ratio; both together must fit the pixel limit.
-        if (default_width && default_height) {
-            if (o.width && !o.height)
+        const bool width_given = width_flag->count() > 0, height_given = height_flag->count() > 0;
+        if (default_width && default_height && width_given != height_given) {
+            if (width_given)
                 o.height = std::max(1, static_cast<int>(std::lround(double(*default_height) * *o.width / *default_width)));
-            if (o.height && !o.width)
+            else
                 o.width = std::max(1, static_cast<int>(std::lround(double(*default_width) * *o.height / *default_height)));
-            if (!o.width) o.width = default_width;
-            if (!o.height) o.height = default_height;
         }
         if (o.width && o.height && std::int64_t{*o.width} * *o.height > kMaxImagePixels)
             throw UsageError(fmt::format("--width/--height: {}x{} is more than {} pixels", *o.width, *o.height,
@@ -294,6 +300,7 @@ std::optional<int> CommandLine::parse(int argc, const char* const* argv) {
         return usage_error(e.what());
     }
     try {
+        if (const auto flag = flag_without_value(argc, argv)) throw UsageError(*flag + ": needs a value");
         check_extras();
         for (const Check& c : m_checks)
             if (c.option->count() > 0) c.apply(c.name, *c.raw);

@@ -103,7 +103,7 @@ private:
         const std::string* raw;
         std::function<void(const std::string& name, const std::string& raw)> apply;
     };
-    void add_checked(const std::string& flags, const std::string& help,
+    void add_checked(const std::string& flags, const std::string& type, const std::string& help,
                      std::function<void(const std::string&, const std::string&)> apply);
     void check_extras() const;
     /// The first value flag followed by no value ("--width" last, or before another flag).
