@@ -7,55 +7,19 @@
 #include <rtlab/app/progress_bar.hpp>
 #include <rtlab/app/stop_on_interrupt.hpp>
 #include <rtlab/core/error.hpp>
-#include <rtlab/core/param_spec.hpp>
 #include <rtlab/render/image_output.hpp>
 #include <rtlab/scene/plugin.hpp>
 #include <rtlab/scene/scene_loader.hpp>
 
 #include <fmt/core.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <string>
-#include <vector>
 
 #include "options.hpp"
+#include "type_listing.hpp"
 
 namespace {
-
-// --list: one line per type; --verbose adds each type's declared parameters, and the parameters a group of
-// types shares (every material's kr, kt, ...) once after the category.
-template <class Registry>
-void list_category(const char* title, const Registry& registry, bool verbose) {
-    if (*title) fmt::print("{}:\n", title);
-    std::vector<const rtlab::ParamSpec*> shared;
-    for (const auto& name : registry.names()) {
-        fmt::print("  {:<20} {}\n", name, registry.doc(name));
-        if (!verbose) continue;
-        const rtlab::TypeSpec& spec = registry.spec(name);
-        fmt::print("{}", rtlab::describe_params(spec, false, "      "));
-        for (const rtlab::ParamSpec& p : spec.params()) {
-            const bool seen = std::any_of(shared.begin(), shared.end(), [&](const rtlab::ParamSpec* q) {
-                return q->group == p.group && q->name == p.name;
-            });
-            if (!p.group.empty() && !seen) shared.push_back(&p);
-        }
-    }
-    std::string group;
-    for (const rtlab::ParamSpec* p : shared) {
-        if (p->group != group) fmt::print("  shared ({}):\n", group = p->group);
-        fmt::print("      {}\n", rtlab::describe_param(*p));
-    }
-}
-
-void list_types(const rtlab::SceneRegistries& r, bool verbose) {
-    list_category("shapes", r.shapes, verbose);
-    list_category("materials", r.materials, verbose);
-    list_category("textures", r.textures, verbose);
-    list_category("lights", r.lights, verbose);
-    fmt::print("tone operators:\n  {:<20} {}\n", "none", "clamps to [0, 1] (the default)");
-    list_category("", r.tone_operators, verbose);
-}
 
 int run(const rtlab::app::RenderOptions& options) {
     const rtlab::app::CommonOptions& common = options.common;
@@ -64,7 +28,7 @@ int run(const rtlab::app::RenderOptions& options) {
                               rtlab::plugin_search_path(options.plugins.dirs));
     for (const auto& file : options.plugins.files) plugins.load_file(file);
     if (options.list) {
-        list_types(registries, options.verbose);
+        fmt::print("{}", rtlab::app::list_types(registries, options.verbose));
         return rtlab::app::kExitDone;
     }
     // A missing folder in -o is found before the scene loads, not after the render.
