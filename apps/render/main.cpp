@@ -65,10 +65,14 @@ int run(const rtlab::app::RenderOptions& options) {
     rtlab::write_render_output(result.image, output, scene.tone.get(), &report);
     if (!common.quiet) {
         const rtlab::RenderStats& s = result.stats;
-        fmt::print("{}: {}x{}, {} objects ({}), {} lights, aa {} spp {}\n", options.scene.string(),
-                   result.image.width(), result.image.height(), scene.job.scene->object_count(),
-                   scene.job.scene->structure(), scene.job.lights.size(), rtlab::pixel_pattern_name(settings.pattern),
-                   settings.spp);
+        // spp means nothing to adaptive sampling: its own settings instead.
+        const std::string sampling =
+            settings.pattern == rtlab::PixelPattern::adaptive
+                ? fmt::format("depth {} threshold {}", settings.adaptive.max_depth, settings.adaptive.threshold)
+                : fmt::format("spp {}", settings.spp);
+        fmt::print("{}: {}x{}, {} objects ({}), {} lights, aa {} {}\n", options.scene.string(), result.image.width(),
+                   result.image.height(), scene.job.scene->object_count(), scene.job.scene->structure(),
+                   scene.job.lights.size(), rtlab::pixel_pattern_name(settings.pattern), sampling);
         fmt::print("rays: {} camera, {} shadow, {} reflected, {} refracted; {} total in {:.3f} s, {:.3g} rays/s\n",
                    s.rays.camera, s.rays.shadow, s.rays.reflected, s.rays.refracted, s.rays.total(), s.seconds,
                    s.rays_per_second());

@@ -5,7 +5,8 @@
 namespace rtlab::app {
 
 std::optional<int> parse_options(int argc, char** argv, RenderOptions& o) {
-    CommandLine cli("rtlab-render", "rtlab-render: render a JSON scene file (docs/scene-format.md) to PNG, EXR, HDR or PFM");
+    CommandLine cli("rtlab-render",
+                    "rtlab-render: render a JSON scene file (docs/scene-format.md) to PNG, EXR, HDR or PFM");
     std::string scene;
     cli.add_positional("scene", scene, "the scene file (.json)");
     cli.add_common(o.common, make_tone_registry().names());

@@ -26,7 +26,8 @@ void list_category(std::string& out, const char* title, const Registry& registry
             if (!p.group.empty() && !seen) shared.push_back(&p);
         }
     }
-    std::stable_sort(shared.begin(), shared.end(), [](const ParamSpec* a, const ParamSpec* b) { return a->group < b->group; });
+    std::stable_sort(shared.begin(), shared.end(),
+                     [](const ParamSpec* a, const ParamSpec* b) { return a->group < b->group; });
     std::string group;
     for (const ParamSpec* p : shared) {
         if (p->group != group) out += fmt::format("  shared by {}:\n", group = p->group);

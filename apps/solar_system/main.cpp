@@ -10,8 +10,8 @@
 #include <fmt/core.h>
 
 int main(int argc, char** argv) {
-    rtlab::app::CommandLine cli("rtlab-solar-system",
-                                "rtlab-solar-system: the Sun and eight textured planets, Saturn's rings, the star field");
+    rtlab::app::CommandLine cli(
+        "rtlab-solar-system", "rtlab-solar-system: the Sun and eight textured planets, Saturn's rings, the star field");
     rtlab::app::CourseOptions options;
     options.output = "solar-system.png";
     options.width = 640;
@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
     std::optional<int> frames;
     std::string range;
     bool procedural = false, unfiltered = false;
-    cli.add_integer("--frames", frames, 1, 100000, "render an orbiting-camera sequence of N frames to OUT-0000.EXT, ...");
+    cli.add_integer("--frames", frames, 1, 100000,
+                    "render an orbiting-camera sequence of N frames to OUT-0000.EXT, ...");
     cli.add_text("--frame-range", range, "with --frames: only frames A to B - 1 (to split a sequence)");
     cli.add_flag("--procedural", procedural, "procedural planet maps and star field even when the images are found");
     cli.add_flag("--no-texture-filter", unfiltered, "planet maps and sky at full resolution (shows the shimmer)");
@@ -51,7 +52,8 @@ int main(int argc, char** argv) {
             if (options.max_depth) job.whitted.max_depth = *options.max_depth;
             const auto output = frames ? rtlab::solar::numbered_path(options.output, f) : options.output;
             const auto label = frames ? fmt::format("solar frame {}/{}", f, count) : std::string("solar system");
-            if (rtlab::app::run_course_render(job, options, output, label).interrupted) return rtlab::app::kExitInterrupted;
+            if (rtlab::app::run_course_render(job, options, output, label).interrupted)
+                return rtlab::app::kExitInterrupted;
         }
         return rtlab::app::kExitDone;
     });

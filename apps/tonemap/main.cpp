@@ -11,8 +11,7 @@
 #include <optional>
 
 int main(int argc, char** argv) {
-    rtlab::app::CommandLine cli("rtlab-tonemap",
-                                "rtlab-tonemap: tone-map an HDR image (Radiance .hdr or .pfm) to PNG");
+    rtlab::app::CommandLine cli("rtlab-tonemap", "rtlab-tonemap: tone-map an HDR image (Radiance .hdr or .pfm) to PNG");
     const rtlab::ToneRegistry registry = rtlab::make_tone_registry();
     std::string input, output, op = "reinhard";
     std::optional<double> key, white, ldmax, stops;
@@ -20,7 +19,8 @@ int main(int argc, char** argv) {
     cli.add_text("-o,--output", output, "output image (.png; .hdr or .pfm keep linear display values)");
     cli.add_word("--op", op, registry.names(), "tone operator");
     cli.add_number("--key", key, 1e-6, 1e6, "reinhard: key value (default 0.18)");
-    cli.add_number("--white", white, 0.0, 1e30, "reinhard: white point in scaled luminance (default: image maximum; 0 = infinite)");
+    cli.add_number("--white", white, 0.0, 1e30,
+                   "reinhard: white point in scaled luminance (default: image maximum; 0 = infinite)");
     cli.add_number("--ldmax", ldmax, 1e-6, 1e9, "ward: display maximum luminance in cd/m2 (default 100)");
     cli.add_number("--stops", stops, -64.0, 64.0, "exposure, aces: exposure in stops (default 0)");
     if (const auto status = cli.parse(argc, argv)) return *status;

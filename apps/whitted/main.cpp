@@ -5,8 +5,8 @@
 #include <rtlab/app/course_app.hpp>
 
 int main(int argc, char** argv) {
-    rtlab::app::CommandLine cli("rtlab-whitted",
-                                "rtlab-whitted: the 1980 Whitted scene (mirror sphere, hollow glass sphere, checkerboard)");
+    rtlab::app::CommandLine cli(
+        "rtlab-whitted", "rtlab-whitted: the 1980 Whitted scene (mirror sphere, hollow glass sphere, checkerboard)");
     rtlab::app::CourseOptions options;
     options.output = "whitted.png";
     options.width = 640;

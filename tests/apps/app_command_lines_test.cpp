@@ -113,7 +113,8 @@ TEST_CASE("apps: every app gives the same status and message for the same bad fl
 TEST_CASE("apps: --spp alone keeps the pattern of the scene in rtlab-render and the course apps alike", "[apps]") {
     const auto dir = test::scratch_dir("apps_spp");
     // Both Whitted scenes anti-alias adaptively: --spp alone is refused by both, in the same words.
-    const auto file = run_app(RENDER_EXE, shell_quoted(kWhittedScene) + " --spp 16 -o " + shell_quoted(dir / "f.pfm"), dir);
+    const auto file =
+        run_app(RENDER_EXE, shell_quoted(kWhittedScene) + " --spp 16 -o " + shell_quoted(dir / "f.pfm"), dir);
     const auto app = run_app(WHITTED_EXE, "--spp 16 -o " + shell_quoted(dir / "a.pfm"), dir);
     CHECK(file.status == 2);
     CHECK(app.status == 2);
@@ -188,8 +189,8 @@ TEST_CASE("apps: Ctrl-C stops every app with status 130 and writes the partial i
         std::vector<std::string> args;
     };
     // Renders of several seconds on one thread, stopped after a fraction of one.
-    const std::vector<std::string> slow{"--width", "400", "--height", "300", "--aa", "random", "--spp", "64",
-                                        "--threads", "1", "--quiet", "-o"};
+    const std::vector<std::string> slow{"--width", "400", "--height",  "300", "--aa",    "random",
+                                        "--spp",   "64",  "--threads", "1",   "--quiet", "-o"};
     const Case cases[] = {{"rtlab-render", RENDER_EXE, {kWhittedScene}},
                           {"rtlab-whitted", WHITTED_EXE, {}},
                           {"rtlab-bunny", BUNNY_EXE, {"--mesh", mesh.string()}},

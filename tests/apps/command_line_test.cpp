@@ -67,9 +67,11 @@ std::size_t count(const std::string& text, const std::string& word) {
 
 TEST_CASE("command line: every common flag reaches its option", "[app]") {
     CourseLine line;
-    const auto p = parse(line.cli, {"-o", "x.exr", "--width", "320", "--height", "200", "--aa", "grid", "--spp", "16",
-                                    "--depth", "3", "--threads", "2", "--seed", "18446744073709551615", "--tonemap",
-                                    "ward", "-q", "--data-dir", "a", "--data-dir=b"});
+    const auto p = parse(
+        line.cli,
+        {"-o",        "x.exr", "--width", "320",        "--height",  "200",         "--aa",   "grid",
+         "--spp",     "16",    "--depth", "3",          "--threads", "2",           "--seed", "18446744073709551615",
+         "--tonemap", "ward",  "-q",      "--data-dir", "a",         "--data-dir=b"});
     REQUIRE_FALSE(p.status);
     CHECK(p.err.empty());
     const CommonOptions& o = line.o;
@@ -166,9 +168,10 @@ TEST_CASE("command line: a bad value is one message naming the program and the f
 }
 
 TEST_CASE("command line: a repeatable option takes one value each time and leaves the positional alone", "[app]") {
-    for (const std::vector<std::string>& args :
-         {std::vector<std::string>{"--plugin", "./x.so", "scene.json"}, {"--plugin=./x.so", "scene.json"},
-          {"--plugin", "./x.so", "--plugin", "y.so", "scene.json"}, {"scene.json", "--plugin", "./x.so"}}) {
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"--plugin", "./x.so", "scene.json"},
+                                                 {"--plugin=./x.so", "scene.json"},
+                                                 {"--plugin", "./x.so", "--plugin", "y.so", "scene.json"},
+                                                 {"scene.json", "--plugin", "./x.so"}}) {
         INFO(args.front() << " ... " << args.back());
         CommonOptions o;
         std::vector<std::filesystem::path> plugins;
@@ -238,8 +241,9 @@ TEST_CASE("command line: --spp is exactly N samples in the pattern of --aa or th
     CourseLine line;
     const auto p = parse(line.cli, {"--aa", "jittered", "--spp", "8"});
     CHECK(p.status == kExitUsage);
-    CHECK(p.err == "prog: --spp 8: --aa jittered needs a square number of samples per pixel (4 or 9); --aa random "
-                   "takes any number\n");
+    CHECK(p.err ==
+          "prog: --spp 8: --aa jittered needs a square number of samples per pixel (4 or 9); --aa random "
+          "takes any number\n");
 }
 
 TEST_CASE("command line: the output folder is made ready before any work or refused", "[app]") {
@@ -247,19 +251,23 @@ TEST_CASE("command line: the output folder is made ready before any work or refu
     const auto dir = test::scratch_dir("command_line_output");
     fs::remove_all(dir / "new");
     fs::remove_all(dir / "missing");
-    CHECK_NOTHROW(prepare_output("bare.png"));   // the current folder
+    CHECK_NOTHROW(prepare_output("bare.png"));     // the current folder
     CHECK_NOTHROW(prepare_output(dir / "x.png"));  // an existing folder
     // A new folder inside an existing one is made.
     CHECK_NOTHROW(prepare_output(dir / "new" / "x.png"));
     CHECK(fs::is_directory(dir / "new"));
     // Two missing levels are an error naming both, and nothing is made.
     const fs::path deep = dir / "missing" / "deeper" / "x.png";
-    CHECK_THROWS_WITH(prepare_output(deep), "'" + deep.string() + "': its folder '" + (dir / "missing" / "deeper").string() +
-                                                "' does not exist, nor does '" + (dir / "missing").string() +
-                                                "'; create it first");
+    CHECK_THROWS_WITH(prepare_output(deep), "'" + deep.string() + "': its folder '" +
+                                                (dir / "missing" / "deeper").string() + "' does not exist, nor does '" +
+                                                (dir / "missing").string() + "'; create it first");
     CHECK_FALSE(fs::exists(dir / "missing"));
     // A file where the folder should be.
-    { std::FILE* f = std::fopen((dir / "new" / "file").c_str(), "w"); REQUIRE(f); std::fclose(f); }
+    {
+        std::FILE* f = std::fopen((dir / "new" / "file").c_str(), "w");
+        REQUIRE(f);
+        std::fclose(f);
+    }
     CHECK_THROWS_WITH(prepare_output(dir / "new" / "file" / "x.png"), Catch::Contains("is not a folder"));
 }
 
@@ -281,8 +289,10 @@ TEST_CASE("rtlab-render --list --verbose shows each type's parameters and a shar
     spec.extend({shared}, "test types");
     TypeSpec twin("its twin");
     twin.extend({shared}, "test types");
-    registries.textures.add("zz_test", [](const Params&) { return std::shared_ptr<Texture>(); }, spec);
-    registries.textures.add("zz_twin", [](const Params&) { return std::shared_ptr<Texture>(); }, twin);
+    registries.textures.add(
+        "zz_test", [](const Params&) { return std::shared_ptr<Texture>(); }, spec);
+    registries.textures.add(
+        "zz_twin", [](const Params&) { return std::shared_ptr<Texture>(); }, twin);
 
     const std::string brief = app::list_types(registries, false);
     CHECK_THAT(brief, Catch::Matchers::Contains("  zz_test              a test texture\n"));

@@ -98,9 +98,8 @@ CommandLine::CommandLine(std::string program, const std::string& description)
 void CommandLine::add_checked(const std::string& flags, const std::string& type, const std::string& help,
                               std::function<void(const std::string&, const std::string&)> apply) {
     std::string& raw = m_raw.emplace_back();
-    CLI::Option* option = m_app.add_option(flags, raw, help)
-                              ->type_name(type)
-                              ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    CLI::Option* option =
+        m_app.add_option(flags, raw, help)->type_name(type)->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     m_checks.push_back({option, display_name(flags), &raw, std::move(apply)});
 }
 
@@ -131,8 +130,8 @@ void CommandLine::add_number(const std::string& flags, std::optional<float>& tar
     });
 }
 
-void CommandLine::add_word(const std::string& flags, std::optional<std::string>& target,
-                           std::vector<std::string> words, const std::string& help) {
+void CommandLine::add_word(const std::string& flags, std::optional<std::string>& target, std::vector<std::string> words,
+                           const std::string& help) {
     const std::string text = help + " (" + join(words) + ")";
     add_checked(flags, "WORD", text,
                 [&target, words = std::move(words)](const std::string& name, const std::string& raw) {
@@ -151,25 +150,27 @@ void CommandLine::add_word(const std::string& flags, std::string& target, std::v
 
 void CommandLine::add_text(const std::string& flags, std::string& target, const std::string& help,
                            std::function<void(const std::string&)> check) {
-    add_checked(flags, "TEXT", help, [&target, check = std::move(check)](const std::string& name, const std::string& raw) {
-        if (raw.empty()) throw UsageError(name + ": expected a value, not an empty one");
-        if (check) {
-            try {
-                check(raw);
-            } catch (const UsageError&) {
-                throw;
-            } catch (const Error& e) {
-                throw UsageError(name + ": " + e.what());
-            }
-        }
-        target = raw;
-    });
+    add_checked(flags, "TEXT", help,
+                [&target, check = std::move(check)](const std::string& name, const std::string& raw) {
+                    if (raw.empty()) throw UsageError(name + ": expected a value, not an empty one");
+                    if (check) {
+                        try {
+                            check(raw);
+                        } catch (const UsageError&) {
+                            throw;
+                        } catch (const Error& e) {
+                            throw UsageError(name + ": " + e.what());
+                        }
+                    }
+                    target = raw;
+                });
 }
 
 void CommandLine::add_list(const std::string& flags, std::vector<fs::path>& target, const std::string& help) {
     // One value per occurrence: CLI11's vector options otherwise take every argument up to the next flag,
     // the scene file included ("--plugin x.so scene.json" left no scene).
-    m_app.add_option_function<std::vector<std::string>>(
+    m_app
+        .add_option_function<std::vector<std::string>>(
             flags, [&target](const std::vector<std::string>& values) { target.assign(values.begin(), values.end()); },
             help)
         ->type_name("PATH")
@@ -233,13 +234,15 @@ void CommandLine::add_common(CommonOptions& o, const std::vector<std::string>& t
         const bool width_given = width_flag->count() > 0, height_given = height_flag->count() > 0;
         if (default_width && default_height && width_given != height_given) {
             if (width_given)
-                o.height = std::max(1, static_cast<int>(std::lround(double(*default_height) * *o.width / *default_width)));
+                o.height =
+                    std::max(1, static_cast<int>(std::lround(double(*default_height) * *o.width / *default_width)));
             else
-                o.width = std::max(1, static_cast<int>(std::lround(double(*default_width) * *o.height / *default_height)));
+                o.width =
+                    std::max(1, static_cast<int>(std::lround(double(*default_width) * *o.height / *default_height)));
         }
         if (o.width && o.height && std::int64_t{*o.width} * *o.height > kMaxImagePixels)
-            throw UsageError(fmt::format("--width/--height: {}x{} is more than {} pixels", *o.width, *o.height,
-                                         kMaxImagePixels));
+            throw UsageError(
+                fmt::format("--width/--height: {}x{} is more than {} pixels", *o.width, *o.height, kMaxImagePixels));
         // What can be checked of --aa and --spp without the scene (a scene's spp is unknown here: 1 passes).
         if (o.aa) {
             RenderSettings s;
@@ -264,8 +267,8 @@ std::optional<std::string> CommandLine::flag_without_value(int argc, const char*
         const std::string arg = argv[i];
         const CLI::Option* option = arg.starts_with('-') ? m_app.get_option_no_throw(arg) : nullptr;
         if (!option || option->get_expected_min() < 1) continue;
-        const bool has_value = i + 1 < argc && (!std::string_view(argv[i + 1]).starts_with('-') ||
-                                                looks_like_number(argv[i + 1]));
+        const bool has_value =
+            i + 1 < argc && (!std::string_view(argv[i + 1]).starts_with('-') || looks_like_number(argv[i + 1]));
         if (!has_value) return arg;
     }
     return std::nullopt;
@@ -335,21 +338,25 @@ void check_sampling(const RenderSettings& s, const CommonOptions& o) {
     if (o.spp) {
         const int n = *o.spp;
         if (s.pattern == PixelPattern::none && n > 1)
-            throw UsageError(fmt::format("--spp {} needs --aa random|jittered|grid: {} takes one sample, in the "
-                                         "pixel's centre",
-                                         n, whose));
+            throw UsageError(
+                fmt::format("--spp {} needs --aa random|jittered|grid: {} takes one sample, in the "
+                            "pixel's centre",
+                            n, whose));
         if (s.pattern == PixelPattern::adaptive)
-            throw UsageError(fmt::format("--spp {} needs --aa random|jittered|grid: {} picks its samples itself "
-                                         "(--aa-depth and --aa-threshold tune it)",
-                                         n, whose));
+            throw UsageError(
+                fmt::format("--spp {} needs --aa random|jittered|grid: {} picks its samples itself "
+                            "(--aa-depth and --aa-threshold tune it)",
+                            n, whose));
         if (square_pattern && !is_square(n))
-            throw UsageError(fmt::format("--spp {}: {} needs a square number of samples per pixel ({}); --aa random "
-                                         "takes any number",
-                                         n, whose, nearest_squares(n)));
+            throw UsageError(
+                fmt::format("--spp {}: {} needs a square number of samples per pixel ({}); --aa random "
+                            "takes any number",
+                            n, whose, nearest_squares(n)));
     } else if (o.aa && square_pattern && !is_square(s.spp)) {
-        throw UsageError(fmt::format("--aa {} needs a square number of samples per pixel, and the scene asks for {}: "
-                                     "give --spp {}",
-                                     pattern, s.spp, nearest_squares(s.spp)));
+        throw UsageError(
+            fmt::format("--aa {} needs a square number of samples per pixel, and the scene asks for {}: "
+                        "give --spp {}",
+                        pattern, s.spp, nearest_squares(s.spp)));
     }
     if ((o.aa_threshold || o.aa_depth) && s.pattern != PixelPattern::adaptive)
         throw UsageError(fmt::format("{} applies to adaptive anti-aliasing only, and {} not adaptive",
@@ -362,8 +369,7 @@ void prepare_output(const fs::path& output) {
     if (folder.empty()) return;
     std::error_code ec;
     if (fs::is_directory(folder, ec)) return;
-    if (fs::exists(folder, ec))
-        throw Error(file_error_message(output, "'" + folder.string() + "' is not a folder"));
+    if (fs::exists(folder, ec)) throw Error(file_error_message(output, "'" + folder.string() + "' is not a folder"));
     const fs::path above = folder.parent_path();
     if (!above.empty() && !fs::is_directory(above, ec))
         throw Error(file_error_message(output, "its folder '" + folder.string() + "' does not exist, nor does '" +

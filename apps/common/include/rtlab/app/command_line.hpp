@@ -19,8 +19,8 @@ namespace rtlab::app {
 
 /// The exit statuses of every rtlab app.
 inline constexpr int kExitDone = 0;
-inline constexpr int kExitBadInput = 1;     ///< a bad scene, mesh, image or data file; a failed write
-inline constexpr int kExitUsage = 2;        ///< a bad command line
+inline constexpr int kExitBadInput = 1;       ///< a bad scene, mesh, image or data file; a failed write
+inline constexpr int kExitUsage = 2;          ///< a bad command line
 inline constexpr int kExitInterrupted = 130;  ///< Ctrl-C: what was rendered is written
 
 /// \brief A bad command-line value: the app prints "PROGRAM: MESSAGE" and exits with kExitUsage.
