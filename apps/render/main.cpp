@@ -7,6 +7,7 @@
 #include <rtlab/app/progress_bar.hpp>
 #include <rtlab/app/stop_on_interrupt.hpp>
 #include <rtlab/core/error.hpp>
+#include <rtlab/core/param_spec.hpp>
 #include <rtlab/render/image_output.hpp>
 #include <rtlab/scene/plugin.hpp>
 #include <rtlab/scene/scene_loader.hpp>
@@ -17,9 +18,28 @@
 #include <string>
 
 #include "options.hpp"
-#include "type_listing.hpp"
 
 namespace {
+
+// --list: one line per type; --verbose adds the parameters each type declares (describe_params). The loader's
+// own listing (rtlab::list_types in libs/scene, on main) replaces this once this branch meets it.
+template <class Registry>
+void list_category(const char* title, const Registry& registry, bool verbose) {
+    fmt::print("{}:\n", title);
+    for (const auto& name : registry.names()) {
+        fmt::print("  {:<20} {}\n", name, registry.doc(name));
+        if (verbose) fmt::print("{}", rtlab::describe_params(registry.spec(name), true, "      "));
+    }
+}
+
+void list_types(const rtlab::SceneRegistries& r, bool verbose) {
+    list_category("shapes", r.shapes, verbose);
+    list_category("materials", r.materials, verbose);
+    list_category("textures", r.textures, verbose);
+    list_category("lights", r.lights, verbose);
+    list_category("tone operators", r.tone_operators, verbose);
+    fmt::print("  {:<20} {}\n", "none", "clamps to [0, 1] (the default)");
+}
 
 int run(const rtlab::app::RenderOptions& options) {
     const rtlab::app::CommonOptions& common = options.common;
@@ -28,7 +48,7 @@ int run(const rtlab::app::RenderOptions& options) {
                               rtlab::plugin_search_path(options.plugins.dirs));
     for (const auto& file : options.plugins.files) plugins.load_file(file);
     if (options.list) {
-        fmt::print("{}", rtlab::app::list_types(registries, options.verbose));
+        list_types(registries, options.verbose);
         return rtlab::app::kExitDone;
     }
     // A missing folder in -o is found before the scene loads, not after the render.

@@ -1,9 +1,7 @@
 // The command-line layer every app uses (apps/common command_line.hpp), in-process: values, checks and their
-// messages, repeatable options, unknown flags, the sampling rules and the output folder; and rtlab-render's
-// --list --verbose.
+// messages, repeatable options, unknown flags, the sampling rules and the output folder.
 #include <rtlab/app/command_line.hpp>
 #include <shared_data.hpp>
-#include <type_listing.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -275,34 +273,4 @@ TEST_CASE("command line: run_program turns errors into exit statuses 1 and 2", "
     CHECK(run_program("prog", [] { return kExitDone; }) == kExitDone);
     CHECK(run_program("prog", []() -> int { throw UsageError("--x: bad"); }) == kExitUsage);
     CHECK(run_program("prog", []() -> int { throw Error("scene.json:1:2: bad"); }) == kExitBadInput);
-}
-
-TEST_CASE("rtlab-render --list --verbose shows each type's parameters and a shared group once", "[app]") {
-    SceneRegistries registries = SceneRegistries::builtins();
-    TypeSpec spec("a test texture");
-    spec.add("scale", ParamKind::number, "how big").defaults("1").range(0, 10);
-    spec.add("mode", ParamKind::word, "how it repeats").allow({"repeat", "clamp"}).defaults("repeat");
-    ParamSpec shared;
-    shared.name = "shared_key";
-    shared.kind = ParamKind::colour;
-    shared.doc = "every such type has it";
-    spec.extend({shared}, "test types");
-    TypeSpec twin("its twin");
-    twin.extend({shared}, "test types");
-    registries.textures.add(
-        "zz_test", [](const Params&) { return std::shared_ptr<Texture>(); }, spec);
-    registries.textures.add(
-        "zz_twin", [](const Params&) { return std::shared_ptr<Texture>(); }, twin);
-
-    const std::string brief = app::list_types(registries, false);
-    CHECK_THAT(brief, Catch::Matchers::Contains("  zz_test              a test texture\n"));
-    CHECK(brief.find("how big") == std::string::npos);
-    const std::string verbose = app::list_types(registries, true);
-    CHECK_THAT(verbose, Catch::Matchers::Contains("  zz_test              a test texture\n"
-                                                  "      scale (number, default 1, in [0, 10]): how big\n"
-                                                  "      mode (repeat | clamp, default repeat): how it repeats\n"));
-    CHECK_THAT(verbose, Catch::Matchers::Contains("  shared by test types:\n      shared_key (colour"));
-    CHECK(count(verbose, "shared_key") == 1);
-    CHECK_THAT(verbose, Catch::Matchers::StartsWith("shapes:\n"));
-    CHECK_THAT(verbose, Catch::Matchers::Contains("tone operators:\n  none "));
 }
