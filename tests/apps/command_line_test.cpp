@@ -116,6 +116,10 @@ TEST_CASE("command line: one image side alone keeps the default aspect ratio and
     const auto p = parse(huge.cli, {"--width", "16384", "--height", "16384"});
     CHECK(p.status == kExitUsage);
     CHECK(p.err == "prog: --width/--height: 16384x16384 is more than 67108864 pixels\n");
+    CourseLine side;
+    const auto q = parse(side.cli, {"--height", "16384"});
+    CHECK(q.status == kExitUsage);
+    CHECK(q.err == "prog: --width/--height: 21845x16384 (the default's aspect ratio) is more than 16384 a side\n");
     // Without defaults (rtlab-render: the scene's size) one side alone stays alone.
     CommonOptions o;
     CommandLine cli("prog", "");

@@ -188,7 +188,7 @@ void CommandLine::add_positional(const std::string& name, std::string& target, c
 }
 
 void CommandLine::add_common(CommonOptions& o, const std::vector<std::string>& tone_operators) {
-    std::string& output = m_raw.emplace_back(o.output.string());
+    std::string& output = m_raw.emplace_back(o.output.string());  // the text; the check sets o.output
     add_text(
         "-o,--output", output,
         "output image: .png (tone-mapped, sRGB), .exr, .hdr or .pfm (linear)" +
@@ -240,6 +240,9 @@ void CommandLine::add_common(CommonOptions& o, const std::vector<std::string>& t
                 o.width =
                     std::max(1, static_cast<int>(std::lround(double(*default_width) * *o.height / *default_height)));
         }
+        if (o.width && o.height && std::max(*o.width, *o.height) > kMaxImageSide)
+            throw UsageError(fmt::format("--width/--height: {}x{} (the default's aspect ratio) is more than {} a side",
+                                         *o.width, *o.height, kMaxImageSide));
         if (o.width && o.height && std::int64_t{*o.width} * *o.height > kMaxImagePixels)
             throw UsageError(
                 fmt::format("--width/--height: {}x{} is more than {} pixels", *o.width, *o.height, kMaxImagePixels));
