@@ -36,8 +36,8 @@ int main(int argc, char** argv) {
             throw rtlab::app::UsageError(e.what());  // names --frame-range already
         }
         rtlab::app::prepare_output(options.output);  // before the textures load, not after the render
-        const auto data = rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0]),
-                                                          "rtlab-solar-system");
+        const auto data =
+            rtlab::app::course_data_path(options, rtlab::app::executable_path(argv[0]), "rtlab-solar-system");
         const rtlab::solar::SolarAssets assets = rtlab::solar::load_solar_assets(data, procedural);
         if (!options.quiet) fmt::print("{}\n", assets.note);
         for (int f = r.first; f < r.last; ++f) {
