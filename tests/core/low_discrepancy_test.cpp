@@ -65,6 +65,17 @@ TEST_CASE("sobol dimension 0 is van der Corput and dimension 1 is Pascal's trian
     CHECK(sobol_sample(0, 1) == 0u);
     CHECK(sobol_sample(1, 0) == 0x80000000u);
     CHECK(sobol_sample(3, 1) == (kSobolDirections[1][0] ^ kSobolDirections[1][1]));
+    // The byte tables give the XOR of the direction numbers of the set bits, for any index.
+    std::uint64_t state = 5;
+    for (int t = 0; t < 1000; ++t) {
+        const auto index = static_cast<std::uint32_t>((state = mix_seed(state + 0x9e3779b97f4a7c15ULL)) >> 7);
+        for (int d = 0; d < kSobolDimensions; ++d) {
+            std::uint32_t x = 0;
+            for (std::size_t b = 0; b < 32; ++b)
+                if ((index >> b) & 1u) x ^= kSobolDirections[static_cast<std::size_t>(d)][b];
+            REQUIRE(sobol_sample(index, d) == x);
+        }
+    }
 }
 
 TEST_CASE("direction numbers from any primitive polynomial stratify their own dimension", "[low_discrepancy]") {

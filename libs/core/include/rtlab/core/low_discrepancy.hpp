@@ -46,14 +46,26 @@ inline constexpr int kSobolDimensions = 2;
 inline constexpr std::array<std::array<std::uint32_t, 32>, kSobolDimensions> kSobolDirections{
     sobol_direction_numbers<0>(0, {}), sobol_direction_numbers<1>(0, {1})};
 
+/// The XOR of each byte's direction numbers, per dimension and byte position: Sobol points with four lookups
+/// instead of a loop over the index's 32 bits (whose branches on random bits cost more than the rest of a pair).
+inline constexpr auto kSobolByteTables = [] {
+    std::array<std::array<std::array<std::uint32_t, 256>, 4>, kSobolDimensions> t{};
+    for (std::size_t d = 0; d < kSobolDimensions; ++d)
+        for (std::size_t byte = 0; byte < 4; ++byte)
+            for (std::size_t value = 0; value < 256; ++value) {
+                std::uint32_t x = 0;
+                for (std::size_t bit = 0; bit < 8; ++bit)
+                    if ((value >> bit) & 1u) x ^= kSobolDirections[d][8 * byte + bit];
+                t[d][byte][value] = x;
+            }
+    return t;
+}();
+
 /// Point `index` of Sobol dimension `dimension` (< kSobolDimensions) as a 32-bit fraction: the XOR of the
 /// direction numbers of the index's set bits.
 inline std::uint32_t sobol_sample(std::uint32_t index, int dimension) {
-    const std::array<std::uint32_t, 32>& v = kSobolDirections[static_cast<std::size_t>(dimension)];
-    std::uint32_t x = 0;
-    for (std::size_t k = 0; index != 0; index >>= 1, ++k)
-        if (index & 1u) x ^= v[k];
-    return x;
+    const auto& t = kSobolByteTables[static_cast<std::size_t>(dimension)];
+    return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
 }
 
 inline std::uint32_t reverse_bits(std::uint32_t x) {
