@@ -17,8 +17,8 @@ void BM_StreamPairs(benchmark::State& state, SampleSequence sequence) {
         benchmark::DoNotOptimize(acc);
         ++sample;
     }
-    state.counters["pairs/s"] = benchmark::Counter(16.0 * static_cast<double>(state.iterations()),
-                                                   benchmark::Counter::kIsRate);
+    state.counters["pairs/s"] =
+        benchmark::Counter(16.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 }  // namespace

@@ -83,9 +83,11 @@ TEST_CASE("direction numbers from any primitive polynomial stratify their own di
     // the 2^k intervals of length 2^-k, one each, which needs every leading k x k block of its matrix invertible.
     const auto d2 = sobol_direction_numbers<2>(1, {1, 3});
     const auto d3 = sobol_direction_numbers<3>(0b01, {1, 3, 1});  // a_1 = 0 (x^2), a_2 = 1 (x)
-    CHECK(d2[2] == (3u << 29));  // m_3 = 2 m_2 ^ 4 m_1 ^ m_1 = 6 ^ 4 ^ 1 = 3
-    CHECK(d2[3] == (9u << 28));  // m_4 = 2 m_3 ^ 4 m_2 ^ m_2 = 6 ^ 12 ^ 3 = 9
-    CHECK(d3[3] == (5u << 28));  // m_4 = 4 a_2 m_2 ^ 8 m_1 ^ m_1 = 12 ^ 8 ^ 1 = 5
+    // By hand: m_3 = 2 m_2 ^ 4 m_1 ^ m_1 = 6 ^ 4 ^ 1 = 3 and m_4 = 2 m_3 ^ 4 m_2 ^ m_2 = 6 ^ 12 ^ 3 = 9 for the
+    // first; m_4 = 4 a_2 m_2 ^ 8 m_1 ^ m_1 = 12 ^ 8 ^ 1 = 5 for the second.
+    CHECK(d2[2] == (3u << 29));
+    CHECK(d2[3] == (9u << 28));
+    CHECK(d3[3] == (5u << 28));
     for (const auto& v : {d2, d3}) {
         for (int k = 0; k <= 12; ++k) {
             std::set<std::uint32_t> cells;
@@ -166,7 +168,7 @@ TEST_CASE("pixels seeds and pairs are decorrelated", "[low_discrepancy]") {
         firsts.insert(a[0].x);
     }
     CHECK(std::abs(mean_r) < 0.02);
-    CHECK(max_r < 0.16);  // 5 sd
+    CHECK(max_r < 0.16);         // 5 sd
     CHECK(firsts.size() == 64);  // the first sample is not shared by pixels
     // Seeds, and pairs of one pixel (the padding of higher dimensions): 4 x 4 cells of (one pair's x, another's
     // x) hold 64 points each on average; chi-square with 15 degrees of freedom below 45 with probability 1 - 1e-4.
@@ -205,9 +207,10 @@ TEST_CASE("a smooth integrand converges much faster than with independent sample
     const double sobol_256 = rmse(SampleSequence::sobol, 256), sobol_1024 = rmse(SampleSequence::sobol, 1024);
     const double random_256 = rmse(SampleSequence::independent, 256);
     const double random_1024 = rmse(SampleSequence::independent, 1024);
-    std::printf("exp(-xy) RMSE over 64 pixels: 256 spp sobol %.3g random %.3g (ratio %.1f); 1024 spp sobol %.3g "
-                "random %.3g (ratio %.1f)\n",
-                sobol_256, random_256, random_256 / sobol_256, sobol_1024, random_1024, random_1024 / sobol_1024);
+    std::printf(
+        "exp(-xy) RMSE over 64 pixels: 256 spp sobol %.3g random %.3g (ratio %.1f); 1024 spp sobol %.3g "
+        "random %.3g (ratio %.1f)\n",
+        sobol_256, random_256, random_256 / sobol_256, sobol_1024, random_1024, random_1024 / sobol_1024);
     // Independent samples: RMSE = sd / sqrt(n), halving from 256 to 1024; scrambled (0,2) points on a smooth
     // integrand: about n^-1.5, 8 times smaller.
     CHECK(random_256 / sobol_256 > 10.0);
@@ -230,5 +233,6 @@ TEST_CASE("stream numbers are pure functions of sequence key and dimension", "[l
                                 SampleKey{42, 7, 9, 14, 0}, SampleKey{42, 7, 9, 13, 1}})
             CHECK(SampleStream(q, other).get2d(3) != a.get2d(3));
     }
-    CHECK(SampleStream(SampleSequence::sobol, {1, 2, 3, 4, 0}).get2d(0) != SampleStream(SampleSequence::independent, {1, 2, 3, 4, 0}).get2d(0));
+    CHECK(SampleStream(SampleSequence::sobol, {1, 2, 3, 4, 0}).get2d(0) !=
+          SampleStream(SampleSequence::independent, {1, 2, 3, 4, 0}).get2d(0));
 }

@@ -1,4 +1,5 @@
 #include "image_plane.hpp"
+#include "noisy_sphere.hpp"
 
 #include <rtlab/core/error.hpp>
 #include <rtlab/render/progressive.hpp>
@@ -31,28 +32,17 @@ public:
         return sample_radiance(CameraSample{r, SampleStream(SampleSequence::independent, key)}, counters);
     }
     RGB sample_radiance(const CameraSample& s, RayCounters& counters) const override {
-        const Ray& r = s.ray;
-        const Vec3 oc = r.origin - Point3(0, 0, -4);
-        const float b = glm::dot(oc, r.direction), c = glm::dot(oc, oc) - 1.0f, disc = b * b - c;
-        if (disc < 0.0f) return RGB(0.1f, 0.2f, 0.4f * std::abs(r.direction.y));
-        const Vec3 n = glm::normalize(oc + (-b - std::sqrt(disc)) * r.direction);
-        ++counters.shadow;
-        if (n.y > 0.5f) ++counters.reflected;
-        const Vec2 u = s.stream.get2d(kFirstIntegratorPair), v = s.stream.get2d(kFirstIntegratorPair + 1);
-        const float light = std::max(0.0f, glm::dot(n, glm::normalize(Vec3(1, 1, 1))));
-        return RGB(light * 3.0f * u.x, light * v.y, 0.5f * u.y * v.x);
+        return noisy_sphere(s.ray, counters, [&](float light) {
+            const Vec2 u = s.stream.get2d(kFirstIntegratorPair), v = s.stream.get2d(kFirstIntegratorPair + 1);
+            return RGB(light * 3.0f * u.x, light * v.y, 0.5f * u.y * v.x);
+        });
     }
 };
 
 ThinLensCamera small_camera(int w, int h) {
-    return ThinLensCamera({.eye = {0, 0, 0}, .look_at = {0, 0, -4}, .vertical_fov_degrees = 40.0f, .width = w,
-                           .height = h},
-                          {.aperture = 0.2f, .focus_distance = 3.5f});
-}
-
-bool same_bytes(const Image& a, const Image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixel_count() * sizeof(RGB)) == 0;
+    return ThinLensCamera(
+        {.eye = {0, 0, 0}, .look_at = {0, 0, -4}, .vertical_fov_degrees = 40.0f, .width = w, .height = h},
+        {.aperture = 0.2f, .focus_distance = 3.5f});
 }
 
 ProgressiveSettings settings_for(int spp, int pass_samples, int threads, int tile_size = 7) {
@@ -281,8 +271,7 @@ TEST_CASE("the batch entry point gets coherent groups and gives the single-sampl
         RGB sample_radiance(const CameraSample& s, RayCounters& c) const override {
             return m_inner.sample_radiance(s, c);
         }
-        void radiance_batch(std::span<const CameraSample> samples, std::span<RGB> out,
-                            RayCounters& c) const override {
+        void radiance_batch(std::span<const CameraSample> samples, std::span<RGB> out, RayCounters& c) const override {
             // Catch's assertions are not thread-safe: record, check on the test's thread.
             std::set<std::uint32_t> ys, indices;
             for (const CameraSample& s : samples) ys.insert(s.stream.key().y), indices.insert(s.stream.key().sample);
@@ -346,9 +335,10 @@ TEST_CASE("a known function of the pixel offset integrates to its analytic pixel
         return std::sqrt(se / 256.0);
     };
     const double sobol = rms_error(SampleSequence::sobol), random = rms_error(SampleSequence::independent);
-    std::printf("pixel means of 2 + sin(1.3 X + 0.7 Y) + XY/100 at 64 spp, RMS error over 256 pixels: sobol %.3g, "
-                "independent %.3g\n",
-                sobol, random);
+    std::printf(
+        "pixel means of 2 + sin(1.3 X + 0.7 Y) + XY/100 at 64 spp, RMS error over 256 pixels: sobol %.3g, "
+        "independent %.3g\n",
+        sobol, random);
     // Independent samples: the per-sample sd over a pixel is about 0.3, so the RMS error is near 0.3 / 8 = 0.04;
     // scrambled (0,2) points on this smooth integrand about 64^-1.5 of it. The bound separates them by a wide margin.
     const double bound = 2e-3;

@@ -17,14 +17,7 @@ using detail::stopped;
 using detail::Tile;
 
 void check_settings(const Camera& camera, const ProgressiveSettings& s) {
-    if (camera.width() <= 0 || camera.height() <= 0)
-        throw Error("progressive render: image size must be positive, got " + std::to_string(camera.width()) + "x" +
-                    std::to_string(camera.height()));
-    if (s.tile_size < 0)
-        throw Error("progressive render: tile size must be at least 1 (or 0: from the image size), got " +
-                    std::to_string(s.tile_size));
-    if (s.threads < 0)
-        throw Error("progressive render: thread count must be >= 0, got " + std::to_string(s.threads));
+    detail::check_tile_settings("progressive render", camera, s.tile_size, s.threads);
     if (s.pass_samples < 0)
         throw Error("progressive render: samples per pass must be >= 0 (0: all in one pass), got " +
                     std::to_string(s.pass_samples));

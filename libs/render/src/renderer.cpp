@@ -170,13 +170,7 @@ bool render_adaptive_tile(const TileContext& c, const Tile& t, RayCounters& coun
 }
 
 void check_settings(const Camera& camera, const RenderSettings& s) {
-    if (camera.width() <= 0 || camera.height() <= 0)
-        throw Error("render: image size must be positive, got " + std::to_string(camera.width()) + "x" +
-                    std::to_string(camera.height()));
-    if (s.tile_size < 0)
-        throw Error("render: tile size must be at least 1 (or 0: from the image size), got " +
-                    std::to_string(s.tile_size));
-    if (s.threads < 0) throw Error("render: thread count must be >= 0, got " + std::to_string(s.threads));
+    detail::check_tile_settings("render", camera, s.tile_size, s.threads);
     if (s.pattern != PixelPattern::adaptive) {
         pattern_sample_count(s.pattern, s.spp);
         return;

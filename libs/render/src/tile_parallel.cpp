@@ -1,5 +1,7 @@
 #include "tile_parallel.hpp"
 
+#include <rtlab/core/error.hpp>
+
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -10,6 +12,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 
 namespace rtlab::detail {
 
@@ -28,6 +31,17 @@ tbb::task_arena& arena_for(int threads) {
 }
 
 }  // namespace
+
+void check_tile_settings(const char* who, const Camera& camera, int tile_size, int threads) {
+    const std::string prefix(who);
+    if (camera.width() <= 0 || camera.height() <= 0)
+        throw Error(prefix + ": image size must be positive, got " + std::to_string(camera.width()) + "x" +
+                    std::to_string(camera.height()));
+    if (tile_size < 0)
+        throw Error(prefix + ": tile size must be at least 1 (or 0: from the image size), got " +
+                    std::to_string(tile_size));
+    if (threads < 0) throw Error(prefix + ": thread count must be >= 0, got " + std::to_string(threads));
+}
 
 void for_each_tile(int threads, int tiles, const std::function<void(int)>& render_tile) {
     auto run = [&] {

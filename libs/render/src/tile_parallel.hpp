@@ -27,6 +27,9 @@ struct TileGrid {
 
 inline bool stopped(const RenderCallbacks& cb) { return cb.stop && cb.stop->load(std::memory_order_relaxed); }
 
+/// Throws rtlab::Error, prefixed by `who`, for a non-positive image size, a negative tile size or thread count.
+void check_tile_settings(const char* who, const Camera& camera, int tile_size, int threads);
+
 /// Calls render_tile(i) for every i in [0, tiles), one tile per task, on `threads` threads (0: TBB's default).
 void for_each_tile(int threads, int tiles, const std::function<void(int)>& render_tile);
 
