@@ -53,8 +53,8 @@ struct PassUpdate {
 /// \brief RenderCallbacks (progress after each finished tile of any pass, counting tiles over all passes, and the
 /// stop flag, checked before every group of camera samples: at most two pixel rows of a tile at one sample index)
 /// plus the progressive renderer's own. Callbacks run one at a time: `tile` and `progress` from worker threads
-/// under one lock, `pass` on the calling thread between passes. A stopped render calls no more tile or pass
-/// callbacks.
+/// under one lock, `pass` on the calling thread between passes. Once the stop flag is seen no tile starts and no
+/// pass callback comes (a tile whose last group was already traced still reports).
 struct ProgressiveCallbacks : RenderCallbacks {
     std::function<void(const TileUpdate&)> tile;
     std::function<void(const PassUpdate&)> pass;
