@@ -121,9 +121,10 @@ TEST_CASE("plugins are names given to the loader before types are looked up", "[
     o.registries = &registries;
     o.plugin_loader = [&](const std::string& name) {
         loaded.push_back(name);
-        registries.materials.add("plugin-matte", [](const Params&) -> std::shared_ptr<Material> {
-            return make_material_registry().create("lambert", {});
-        });
+        registries.materials.add(
+            "plugin-matte",
+            [](const Params&) -> std::shared_ptr<Material> { return make_material_registry().create("lambert", {}); },
+            TypeSpec("a plugin's matte material, no parameters"));
     };
     const LoadedScene s = parse_scene(scene, "t.json", o);
     CHECK(loaded == std::vector<std::string>{"extra"});

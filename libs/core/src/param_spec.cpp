@@ -64,6 +64,12 @@ const ParamSpec* TypeSpec::find(std::string_view name) const {
     return nullptr;
 }
 
+ParamSpec& TypeSpec::at(std::string_view name) {
+    for (ParamSpec& p : m_params)
+        if (p.name == name) return p;
+    throw std::logic_error("parameter '" + std::string(name) + "' is not declared");
+}
+
 std::vector<std::string> TypeSpec::names() const {
     std::vector<std::string> out;
     out.reserve(m_params.size());

@@ -11,9 +11,15 @@
 #include <rtlab/textures/texture_param.hpp>
 
 #include <memory>
+#include <string>
 #include <string_view>
 
 namespace rtlab::shading_detail {
+
+/// The shortest text of v that a message shows ("1.5").
+std::string number_text(double v);
+/// Whether every component is >= 0 (NaN is not).
+bool non_negative(const RGB& c);
 
 /// A point or vector with finite components (core's checks have no Vec3 read).
 Vec3 finite_vec3(const Params& params, std::string_view name, const Vec3& fallback);
@@ -59,19 +65,11 @@ private:
 /// mirror anyway.
 inline constexpr float kMaxExponent = 1e15f;
 
-/// What a material type uses when the Whitted parameters are absent.
-struct WhittedDefaults {
-    RGB kr{0.0f}, kt{0.0f};
-    float ior = 1.0f;
-    bool fresnel = false;
-};
-
-/// Reads kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption (every material's parameters).
-/// Constant kr + kt > 1 (without Fresnel) or kr, kt > 1 (with it) are rejected.
-Material::Whitted read_whitted(const Params& params, const WhittedDefaults& defaults);
-
-/// The documentation of the Whitted parameters, appended to every material's doc string.
-extern const char* const kWhittedDoc;
+/// Appends the keys every material shares (material_shared_params()) to a material type's declaration.
+TypeSpec& with_material_params(TypeSpec& spec);
+TypeSpec with_material_params(TypeSpec&& spec);
+/// The declaration of a diffuse plus specular-lobe material (phong, blinn-phong): kd, ks and exponent.
+TypeSpec lobe_spec(std::string doc, std::string exponent_doc);
 
 void register_lambert(MaterialRegistry& registry);
 void register_phong(MaterialRegistry& registry);

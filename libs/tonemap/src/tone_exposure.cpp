@@ -39,14 +39,22 @@ private:
     bool m_filmic;
 };
 
+namespace {
+TypeSpec stops_spec(std::string doc) {
+    TypeSpec s(std::move(doc));
+    s.add("stops", ParamKind::number, "exposure: each stop doubles the light").defaults("0").range(-64, 64).in("stops");
+    return s;
+}
+}  // namespace
+
 void register_exposure(ToneRegistry& r) {
     r.add(
         "exposure",
         [](const Params& p) { return std::make_shared<ExposureOperator>(p.get_float("stops", 0.0f), false); },
-        "linear scale by 2^stops, clamped; stops (default 0)");
+        stops_spec("linear scale by 2^stops, clamped"));
     r.add(
         "aces", [](const Params& p) { return std::make_shared<ExposureOperator>(p.get_float("stops", 0.0f), true); },
-        "Narkowicz 2015 ACES filmic fit per channel after 2^stops; stops (default 0)");
+        stops_spec("Narkowicz 2015 ACES filmic fit per channel after 2^stops"));
 }
 
 }  // namespace rtlab::tonemap

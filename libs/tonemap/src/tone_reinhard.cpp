@@ -42,6 +42,17 @@ private:
     std::optional<double> m_white;  // none: the image's largest scaled luminance
 };
 
+namespace {
+TypeSpec reinhard_spec() {
+    TypeSpec s("Reinhard et al. 2002 photographic operator, global version");
+    s.add("key", ParamKind::number, "the scaled log-average luminance (> 0)").defaults("0.18").at_least(0);
+    s.add("white", ParamKind::number,
+          "the smallest scaled luminance shown as white (default: the image maximum; 0: infinite)")
+        .at_least(0);
+    return s;
+}
+}  // namespace
+
 void register_reinhard(ToneRegistry& r) {
     r.add(
         "reinhard",
@@ -49,8 +60,7 @@ void register_reinhard(ToneRegistry& r) {
             return std::make_shared<ReinhardOperator>(
                 p.get_float("key", 0.18f), p.has("white") ? std::optional<double>(p.get_float("white")) : std::nullopt);
         },
-        "Reinhard et al. 2002 photographic operator; key (default 0.18), white (default: the image maximum; 0 = "
-        "infinite)");
+        reinhard_spec());
 }
 
 }  // namespace rtlab::tonemap

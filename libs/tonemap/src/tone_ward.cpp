@@ -31,10 +31,18 @@ private:
     double m_ld_max;
 };
 
+namespace {
+TypeSpec ward_spec() {
+    TypeSpec s("Ward 1994 contrast-based scale factor");
+    s.add("ldmax", ParamKind::number, "the display's maximum luminance (> 0)").defaults("100").at_least(0).in("cd/m2");
+    return s;
+}
+}  // namespace
+
 void register_ward(ToneRegistry& r) {
     r.add(
         "ward", [](const Params& p) { return std::make_shared<WardOperator>(p.get_float("ldmax", 100.0f)); },
-        "Ward 1994 contrast-based scale factor; ldmax = display maximum in cd/m2 (default 100)");
+        ward_spec());
 }
 
 }  // namespace rtlab::tonemap
