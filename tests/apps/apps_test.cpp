@@ -156,11 +156,15 @@ TEST_CASE("whitted: adaptive anti-aliasing by default, flags override it", "[app
     CHECK(job.settings.pattern == PixelPattern::adaptive);
     CHECK(job.whitted.convention == Convention::classic);
     app::CourseOptions o;
+    // --spp alone never switches the pattern: adaptive takes no sample count.
     o.spp = 9;
+    CHECK_THROWS_AS(app::apply_course_options(o, job), app::UsageError);
+    o.aa = "jittered";
     app::apply_course_options(o, job);
     CHECK(job.settings.pattern == PixelPattern::jittered);
     CHECK(job.settings.spp == 9);
     o.aa = "none";
+    o.spp.reset();
     o.seed = 42;
     o.max_depth = 2;
     app::apply_course_options(o, job);
@@ -180,33 +184,35 @@ TEST_CASE("rtlab-whitted writes the image of the scene function, byte for byte",
     CHECK(test::same_pixels(written, render_job(job).image));
 }
 
-TEST_CASE("course apps: bad flags exit 1 with a message", "[apps]") {
+TEST_CASE("course apps: bad flags exit 2 and bad input 1 with a message", "[apps]") {
     const auto dir = test::scratch_dir("apps_flags");
     struct Case {
         const char* exe;
         const char* args;
+        int status;
         const char* message;
     };
     const Case cases[] = {
-        {WHITTED_EXE, "--bogus", "--bogus"},
-        {WHITTED_EXE, "--width 0", "--width"},
-        {WHITTED_EXE, "--aa sideways", "sideways"},
-        {WHITTED_EXE, "--spp many", "--spp"},
-        {WHITTED_EXE, "-o whitted.tiff", "whitted.tiff"},
-        {BUNNY_EXE, "--material velvet", "velvet"},
-        {BUNNY_EXE, "--mesh no-such-mesh.obj", "no-such-mesh.obj"},
-        {SOLAR_EXE, "--frame-range 1:2", "--frames"},
-        {SOLAR_EXE, "--frames 4 --frame-range 3:2", "3:2"},
-        {SOLAR_EXE, "--frames 4 --frame-range 0:5", "0:5"},
-        {SOLAR_EXE, "--frames 4 --frame-range two", "two"},
-        {SOLAR_EXE, "--frames 0", "--frames"},
+        {WHITTED_EXE, "--bogus", 2, "rtlab-whitted: unknown option '--bogus'"},
+        {WHITTED_EXE, "--width 0", 2, "rtlab-whitted: --width: must be at least 1, not 0"},
+        {WHITTED_EXE, "--aa sideways", 2, "rtlab-whitted: --aa: 'sideways' is not one of"},
+        {WHITTED_EXE, "--spp many", 2, "rtlab-whitted: --spp: expected a whole number, not 'many'"},
+        {WHITTED_EXE, "-o whitted.tiff", 2, "rtlab-whitted: -o: 'whitted.tiff': unknown image format"},
+        {BUNNY_EXE, "--material velvet", 2, "rtlab-bunny: --material: 'velvet' is not one of"},
+        {BUNNY_EXE, "--mesh no-such-mesh.obj", 1, "rtlab-bunny: 'no-such-mesh.obj'"},
+        {SOLAR_EXE, "--frame-range 1:2", 2, "rtlab-solar-system: --frame-range needs --frames"},
+        {SOLAR_EXE, "--frames 4 --frame-range 3:2", 2, "3:2"},
+        {SOLAR_EXE, "--frames 4 --frame-range 0:5", 2, "0:5"},
+        {SOLAR_EXE, "--frames 4 --frame-range two", 2, "two"},
+        {SOLAR_EXE, "--frames 0", 2, "rtlab-solar-system: --frames: must be in [1, 100000], not 0"},
     };
     for (const Case& c : cases) {
         INFO(c.exe << " " << c.args);
-        const std::string args = std::string(c.args) + " --quiet --width 8 --height 6";
+        // The case's own values last: a flag given twice takes the last value.
+        const std::string args = "--quiet --width 8 --height 6 " + std::string(c.args);
         const auto run = run_app(c.exe, args, dir);
-        CHECK(run.status == 1);
-        CHECK(run.err.find(c.message) != std::string::npos);
+        CHECK(run.status == c.status);
+        CHECK_THAT(run.err, Catch::Matchers::Contains(c.message));
     }
     // --help is not an error.
     CHECK(run_app(WHITTED_EXE, "--help", dir).status == 0);

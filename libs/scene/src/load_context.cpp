@@ -21,15 +21,24 @@ const char* kind_name(Kind k) {
     }
 }
 
+namespace {
+
+DataPath data_path_of(const SceneLoadOptions& options) {
+    if (options.data_path) return *options.data_path;
+    if (options.use_environment) return DataPath::from_environment(options.data_dirs, {});
+    std::vector<DataRoot> roots;
+    for (const auto& dir : options.data_dirs) roots.push_back({dir, DataRoot::Kind::data_dir, "--data-dir"});
+    return DataPath(std::move(roots), false);
+}
+
+}  // namespace
+
 LoadContext::LoadContext(const fs::path& file, const SceneLoadOptions& load_options, SceneRegistries& reg)
     : diag(file.string()),
       options(load_options),
       registries(reg),
-      // A bare "scene.json" lies in the current folder: "." is searched, where an empty folder would be skipped.
-      m_folder(file.has_parent_path() ? file.parent_path() : fs::path(".")) {
-    m_search = options.use_environment ? SearchPath::from_environment(options.data_dirs, kDataPathVariable)
-                                       : SearchPath(options.data_dirs);
-}
+      m_folder(folder_of(file)),  // a bare "scene.json" lies in ".", which is searched (an empty folder is not)
+      m_data(data_path_of(load_options)) {}
 
 void LoadContext::note_use(const Texture* texture) {
     if (!collecting || !texture) return;
@@ -44,7 +53,7 @@ void LoadContext::warn(const std::string& p, const std::string& message) {
 }
 
 bool LoadContext::has_file(const std::string& name) const {
-    return !name.empty() && m_search.find(name, m_folder).has_value();
+    return !name.empty() && m_data.find(name, m_folder).has_value();
 }
 
 std::optional<std::string> LoadContext::find_file(const std::string& name, const std::string& p) {
@@ -52,7 +61,10 @@ std::optional<std::string> LoadContext::find_file(const std::string& name, const
         error(p, "expected a file name, not an empty string");
         return std::nullopt;
     }
-    if (auto found = m_search.find(name, m_folder)) return found->string();
+    if (auto found = m_data.find(name, m_folder)) {
+        out.assets.push_back({name, *found});
+        return found->path.string();
+    }
     std::error_code ec;
     const fs::path beside = m_folder / name;
     if (fs::is_directory(fs::path(name).is_absolute() ? fs::path(name) : beside, ec)) {
@@ -70,24 +82,13 @@ std::optional<std::string> LoadContext::find_folder(const std::string& name, con
 }
 
 std::optional<std::string> LoadContext::locate_folder(const std::string& name) const {
-    std::error_code ec;
-    std::vector<fs::path> tries;
-    if (fs::path(name).is_absolute()) {
-        tries.push_back(name);
-    } else {
-        tries.push_back(m_folder / name);
-        for (const auto& f : m_search.folders()) tries.push_back(f / name);
-    }
-    for (const auto& t : tries)
-        if (!name.empty() && fs::is_directory(t, ec)) return t.string();
+    if (name.empty()) return std::nullopt;
+    if (auto found = m_data.find_folder(name, m_folder)) return found->string();
     return std::nullopt;
 }
 
 std::string LoadContext::where() const {
-    std::string out = "'" + m_folder.string() + "' (the scene's folder)";
-    for (const auto& f : m_search.folders()) out += ", '" + f.string() + "'";
-    if (m_search.folders().empty()) out += "; add folders with --data-dir or " + std::string(kDataPathVariable);
-    return out;
+    return m_data.describe(m_folder) + "; add folders with --data-dir or " + std::string(kDataPathVariable);
 }
 
 }  // namespace rtlab::scene_detail

@@ -1,7 +1,7 @@
 #pragma once
 // Private to the scene loader: what the stages of loading one scene file share — its diagnostics, where its
 // files are found, the named objects defined so far, and the scene being built.
-#include <rtlab/core/search_path.hpp>
+#include <rtlab/core/data_path.hpp>
 #include <rtlab/render/texture_level.hpp>
 #include <rtlab/scene/scene_loader.hpp>
 #include <rtlab/textures/mip_map.hpp>
@@ -85,7 +85,7 @@ public:
 
 private:
     std::filesystem::path m_folder;  ///< the scene file's folder ("." for a bare file name)
-    SearchPath m_search;
+    DataPath m_data;
 };
 
 }  // namespace rtlab::scene_detail

@@ -23,8 +23,10 @@ public:
     }
     Image apply(const Image& hdr, ToneReport* report) const override {
         const double scale = std::exp2(m_stops);
+        // The parameter was read as a float: printed as one ("0.18", not "0.18000000715255737").
         fill_report(report, measure_luminance(hdr), scale,
-                    fmt::format("{}: {} stops, scale {:.6g}", m_filmic ? "aces" : "exposure", m_stops, scale));
+                    fmt::format("{}: {} stops, scale {:.6g}", m_filmic ? "aces" : "exposure",
+                                static_cast<float>(m_stops), scale));
         const auto s = static_cast<float>(scale);
         if (!m_filmic) return map_pixels(hdr, [s](const RGB& c) { return c * s; });
         return map_pixels(hdr, [s](const RGB& c) {
