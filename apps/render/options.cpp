@@ -30,6 +30,7 @@ SceneOverrides scene_overrides(const CommonOptions& o) {
     overrides.threads = o.threads;
     overrides.tonemap = o.tonemap;
     overrides.seed = o.seed;
+    overrides.max_depth = o.max_depth;
     return overrides;
 }
 

@@ -95,7 +95,7 @@ TEST_CASE("apps: every app gives the same status and message for the same bad fl
         {"--width -5", "--width: must be at least 1, not -5"},
         {"--tonemap bogus", "--tonemap: 'bogus' is not one of none, "},
         {"--threads many", "--threads: expected a whole number, not 'many'"},
-        {"--aa none --spp 4", "--spp 4 needs --aa random|jittered|grid: --aa none takes one sample"},
+        {"--aa none --spp 4", "--spp 4 needs --aa random|jittered|grid|sobol: --aa none takes one sample"},
         {"--aa grid --spp 10", "--spp 10: --aa grid needs a square number of samples per pixel (9 or 16)"},
         {"--depth", "--depth: needs a value"},
     };
@@ -118,7 +118,7 @@ TEST_CASE("apps: --spp alone keeps the pattern of the scene in rtlab-render and 
     const auto app = run_app(WHITTED_EXE, "--spp 16 -o " + shell_quoted(dir / "a.pfm"), dir);
     CHECK(file.status == 2);
     CHECK(app.status == 2);
-    const std::string why = "--spp 16 needs --aa random|jittered|grid: the scene's anti-aliasing, adaptive,";
+    const std::string why = "--spp 16 needs --aa random|jittered|grid|sobol: the scene's anti-aliasing, adaptive,";
     CHECK_THAT(file.err, Catch::Matchers::Contains(why));
     CHECK_THAT(app.err, Catch::Matchers::Contains(why));
     // With a pattern named, both render exactly that many samples: the same image.

@@ -144,7 +144,8 @@ TEST_CASE("command line: a bad value is one message naming the program and the f
         {{"--aa", "adaptive", "--aa-threshold", "nan"}, "prog: --aa-threshold: expected a number, not 'nan'\n"},
         {{"--seed", "-1"}, "prog: --seed: expected a whole number in [0, 2^64 - 1], not '-1'\n"},
         {{"--aa", "jitered"},
-         "prog: --aa: 'jitered' is not one of none, grid, random, jittered, adaptive; did you mean 'jittered'?\n"},
+         "prog: --aa: 'jitered' is not one of none, grid, random, jittered, sobol, adaptive; did you mean "
+         "'jittered'?\n"},
         {{"--tonemap", "bogus"}, "prog: --tonemap: 'bogus' is not one of none, reinhard, ward\n"},
         {{"-o", "out.tiff"}, "prog: -o: 'out.tiff': unknown image format '.tiff'; known: .png, .hdr, .pfm, .exr\n"},
         {{"--sspp", "4"}, "prog: unknown option '--sspp'; did you mean '--spp'?\n"},
@@ -211,10 +212,11 @@ TEST_CASE("command line: --spp is exactly N samples in the pattern of --aa or th
     // The scene's pattern is kept: --spp alone never switches it.
     CHECK_NOTHROW(check_sampling(settings(PixelPattern::random, 16), spp16));
     CHECK_NOTHROW(check_sampling(settings(PixelPattern::jittered, 16), spp16));
-    CHECK_THROWS_WITH(check_sampling(settings(PixelPattern::none, 16), spp16),
-                      Catch::StartsWith("--spp 16 needs --aa random|jittered|grid: the scene's anti-aliasing, none,"));
+    CHECK_THROWS_WITH(
+        check_sampling(settings(PixelPattern::none, 16), spp16),
+        Catch::StartsWith("--spp 16 needs --aa random|jittered|grid|sobol: the scene's anti-aliasing, none,"));
     CHECK_THROWS_WITH(check_sampling(settings(PixelPattern::adaptive, 16), spp16),
-                      Catch::StartsWith("--spp 16 needs --aa random|jittered|grid: the scene's anti-aliasing, "
+                      Catch::StartsWith("--spp 16 needs --aa random|jittered|grid|sobol: the scene's anti-aliasing, "
                                         "adaptive, picks its samples itself"));
     CommonOptions spp10;
     spp10.spp = 10;

@@ -105,3 +105,11 @@ TEST_CASE("an unknown type is told the nearest registered type", "[scene_loader]
         "materials": [{"name": "m", "type": "lambrt"}], "shapes": [{"type": "sphere", "material": "m"}]})";
     CHECK_THAT(load_error(text), Catch::Contains("unknown material type 'lambrt'; did you mean 'lambert'?"));
 }
+
+TEST_CASE("a square pattern given a count that is not a square is told the nearest squares", "[scene_loader]") {
+    const std::string text = R"({"version": 1, "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+        "render": {"aa": "jittered", "spp": 10},
+        "materials": [{"name": "m", "type": "lambert"}], "shapes": [{"type": "sphere", "material": "m"}]})";
+    CHECK_THAT(load_error(text), Catch::Contains("/render/spp: 10 samples are not a square number, which jittered "
+                                                 "needs: give 9 or 16"));
+}

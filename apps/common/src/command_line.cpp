@@ -204,7 +204,8 @@ void CommandLine::add_common(CommonOptions& o, const std::vector<std::string>& t
                 [&o](const std::string& name, const std::string& raw) { o.width = image_side(name, raw); });
     add_checked("--height", "INT", "image height in pixels (alone: keeps the aspect ratio)",
                 [&o](const std::string& name, const std::string& raw) { o.height = image_side(name, raw); });
-    add_word("--aa", o.aa, {"none", "grid", "random", "jittered", "adaptive"}, "anti-aliasing (default: the scene's)");
+    add_word("--aa", o.aa, {"none", "grid", "random", "jittered", "sobol", "adaptive"},
+             "anti-aliasing (default: the scene's); sobol: progressive Owen-scrambled Sobol samples");
     add_integer("--spp", o.spp, 1, kMaxSamplesPerPixel,
                 "exactly this many samples per pixel in the pattern of --aa or the scene: any number for random, a "
                 "square for grid and jittered");
@@ -342,12 +343,12 @@ void check_sampling(const RenderSettings& s, const CommonOptions& o) {
         const int n = *o.spp;
         if (s.pattern == PixelPattern::none && n > 1)
             throw UsageError(
-                fmt::format("--spp {} needs --aa random|jittered|grid: {} takes one sample, in the "
+                fmt::format("--spp {} needs --aa random|jittered|grid|sobol: {} takes one sample, in the "
                             "pixel's centre",
                             n, whose));
         if (s.pattern == PixelPattern::adaptive)
             throw UsageError(
-                fmt::format("--spp {} needs --aa random|jittered|grid: {} picks its samples itself "
+                fmt::format("--spp {} needs --aa random|jittered|grid|sobol: {} picks its samples itself "
                             "(--aa-depth and --aa-threshold tune it)",
                             n, whose));
         if (square_pattern && !is_square(n))

@@ -35,7 +35,7 @@ void read_aa(LoadContext& ctx, const Json& aa, const std::string& ap) {
     }
     check_keys(ctx.diag, aa, ap, {"mode", "max_depth", "threshold"});
     if (!aa.contains("mode"))
-        ctx.error(ap, "missing key 'mode' (none, grid, random, jittered or adaptive)");
+        ctx.error(ap, "missing key 'mode' (none, grid, random, jittered, sobol or adaptive)");
     else if (auto m = read_string(ctx.diag, aa["mode"], pointer_append(ap, "mode")))
         read_pattern(ctx, *m, pointer_append(ap, "mode"));
     if (aa.contains("max_depth"))
@@ -83,6 +83,18 @@ bool read_size(LoadContext& ctx, const Json& r, const std::string& p, std::int64
     return ok;
 }
 
+// spp means exactly that many samples: a pattern on a square grid given another count is told so, not rounded.
+void check_square_count(LoadContext& ctx, const RenderSettings& settings, const std::string& p) {
+    if (settings.pattern != PixelPattern::grid && settings.pattern != PixelPattern::jittered) return;
+    int below = 1;
+    while ((below + 1) * (below + 1) <= settings.spp) ++below;
+    if (below * below == settings.spp) return;
+    ctx.error(p, std::to_string(settings.spp) + " samples are not a square number, which " +
+                     std::string(pixel_pattern_name(settings.pattern)) + " needs: give " +
+                     std::to_string(below * below) + " or " + std::to_string((below + 1) * (below + 1)) +
+                     ", or use \"random\" or \"sobol\" for any count");
+}
+
 void read_sampling(LoadContext& ctx, const Json& r, const std::string& p) {
     const SceneOverrides& o = ctx.options.overrides;
     RenderSettings& settings = ctx.out.job.settings;
@@ -95,9 +107,11 @@ void read_sampling(LoadContext& ctx, const Json& r, const std::string& p) {
             ctx.diag.error_at(0, std::string("--aa: ") + e.what());
         }
     }
-    if (r.contains("spp"))
+    if (r.contains("spp")) {
         if (auto v = read_integer(ctx.diag, r["spp"], at("spp"), 1, kMaxSamplesPerPixel))
             settings.spp = static_cast<int>(*v);
+        if (!o.spp) check_square_count(ctx, settings, at("spp"));
+    }
     // The command line checks its own values; a program passing overrides directly is told here.
     if (o.spp && (*o.spp < 1 || *o.spp > kMaxSamplesPerPixel))
         ctx.diag.error_at(

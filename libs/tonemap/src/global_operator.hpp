@@ -4,8 +4,25 @@
 #include <rtlab/tonemap/tone_operator.hpp>
 
 #include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <string>
 
 namespace rtlab::tonemap {
+
+// A parameter read as a float, as written ("0.18", not "0.18000000715255737"): its shortest text.
+inline std::string shortest(float v) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return {buffer, result.ptr};
+}
+
+// A measured value to six significant digits (printf's %.6g).
+inline std::string six_digits(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", v);
+    return buffer;
+}
 
 template <class MapPixel>
 Image map_pixels(const Image& hdr, MapPixel&& map) {

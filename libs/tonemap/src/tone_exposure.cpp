@@ -5,7 +5,6 @@
 
 #include "global_operator.hpp"
 
-#include <fmt/core.h>
 #include <cmath>
 
 namespace rtlab::tonemap {
@@ -25,8 +24,8 @@ public:
         const double scale = std::exp2(m_stops);
         // The parameter was read as a float: printed as one ("0.18", not "0.18000000715255737").
         fill_report(report, measure_luminance(hdr), scale,
-                    fmt::format("{}: {} stops, scale {:.6g}", m_filmic ? "aces" : "exposure",
-                                static_cast<float>(m_stops), scale));
+                    std::string(m_filmic ? "aces" : "exposure") + ": " + shortest(static_cast<float>(m_stops)) +
+                        " stops, scale " + six_digits(scale));
         const auto s = static_cast<float>(scale);
         if (!m_filmic) return map_pixels(hdr, [s](const RGB& c) { return c * s; });
         return map_pixels(hdr, [s](const RGB& c) {

@@ -7,7 +7,6 @@
 
 #include "global_operator.hpp"
 
-#include <fmt/core.h>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -27,8 +26,8 @@ public:
         const double inv_white2 = (white > 0.0 && std::isfinite(white)) ? 1.0 / (white * white) : 0.0;
         // The parameter was read as a float: printed as one ("0.18", not "0.18000000715255737").
         fill_report(report, s, scale,
-                    fmt::format("reinhard: key {}, L_avg {:.6g}, white {}", static_cast<float>(m_key), s.log_average,
-                                inv_white2 > 0.0 ? fmt::format("{:.6g}", white) : std::string("infinite")));
+                    "reinhard: key " + shortest(static_cast<float>(m_key)) + ", L_avg " + six_digits(s.log_average) +
+                        ", white " + (inv_white2 > 0.0 ? six_digits(white) : std::string("infinite")));
         return map_pixels(hdr, [scale, inv_white2](const RGB& c) {
             const double lw = c.luminance();
             if (!(lw > 0.0)) return RGB{};

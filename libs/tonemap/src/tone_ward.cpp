@@ -6,7 +6,6 @@
 
 #include "global_operator.hpp"
 
-#include <fmt/core.h>
 #include <cmath>
 
 namespace rtlab::tonemap {
@@ -22,9 +21,9 @@ public:
         const double m =
             std::pow((1.219 + std::pow(ld_a, 0.4)) / (1.219 + std::pow(s.log_average, 0.4)), 2.5) / m_ld_max;
         // The parameter was read as a float: printed as one ("0.18", not "0.18000000715255737").
-        fill_report(
-            report, s, m,
-            fmt::format("ward: ldmax {} cd/m2, L_wa {:.6g}, m {:.6g}", static_cast<float>(m_ld_max), s.log_average, m));
+        fill_report(report, s, m,
+                    "ward: ldmax " + shortest(static_cast<float>(m_ld_max)) + " cd/m2, L_wa " +
+                        six_digits(s.log_average) + ", m " + six_digits(m));
         const auto mf = static_cast<float>(m);
         return map_pixels(hdr, [mf](const RGB& c) { return c * mf; });
     }
