@@ -28,6 +28,16 @@ inline float pow_one_minus(float x, float e) {
     return std::exp(e * std::log1p(-std::max(0.0f, x)));
 }
 
+/// wo mirrored about the unit vector h (both pointing away from the surface).
+inline Vec3 reflect_about(const Vec3& wo, const Vec3& h) { return 2.0f * glm::dot(wo, h) * h - wo; }
+
+/// The probability with which a two-part model draws its specular part: the specular weight's share of the
+/// sum, or -1 when both weights are 0 (the model is black and draws nothing).
+inline float specular_probability(float diffuse_weight, float specular_weight) {
+    const float sum = diffuse_weight + specular_weight;
+    return sum > 0.0f ? specular_weight / sum : -1.0f;
+}
+
 // The checks build their messages only on failure: materials construct BRDFs per light sample, where
 // formatting the values up front cost ~1 us per Cook-Torrance and ~2 us per Ashikhmin-Shirley.
 inline void check_parameter(bool ok, const char* model, const char* what, float got) {

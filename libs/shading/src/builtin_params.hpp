@@ -80,6 +80,7 @@ void register_cook_torrance(MaterialRegistry& registry);
 void register_ashikhmin_shirley(MaterialRegistry& registry);
 void register_mirror(MaterialRegistry& registry);
 void register_glass(MaterialRegistry& registry);
+void register_rough_dielectric(MaterialRegistry& registry);
 
 void register_point(LightRegistry& registry);
 void register_directional(LightRegistry& registry);

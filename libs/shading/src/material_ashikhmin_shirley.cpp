@@ -40,6 +40,19 @@ public:
         return f.eval(wo, wi) * (c == Convention::physical ? wi.z : wi.z * kPi);
     }
 
+    // Sampled: the physical model of brdf.hpp with its own sampler.
+    bool has_lobes() const override { return true; }
+    RGB lobe_eval(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
+        return AshikhminShirleyBrdf(t.diffuse, t.specular, t.shape_u, t.shape_v).eval(wo, wi);
+    }
+    float lobe_pdf(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
+        return AshikhminShirleyBrdf(t.diffuse, t.specular, t.shape_u, t.shape_v).pdf(wo, wi);
+    }
+    std::optional<LobeDraw> lobe_sample(const SurfaceTerms& t, const Vec3& wo, float uc, const Vec2& u,
+                                        TransportMode) const override {
+        return AshikhminShirleyBrdf(t.diffuse, t.specular, t.shape_u, t.shape_v).sample(wo, uc, u);
+    }
+
 protected:
     void local_terms(const TextureLookup& q, SurfaceTerms& t) const override {
         t.diffuse = m_rd.eval(q);

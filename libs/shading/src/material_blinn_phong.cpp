@@ -36,6 +36,19 @@ public:
         return t.diffuse * wi.z + t.specular * std::pow(nh, t.shape_u);
     }
 
+    // Sampled: the physical model of brdf.hpp with its own sampler.
+    bool has_lobes() const override { return true; }
+    RGB lobe_eval(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
+        return BlinnPhongBrdf(t.diffuse, t.specular, t.shape_u).eval(wo, wi);
+    }
+    float lobe_pdf(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
+        return BlinnPhongBrdf(t.diffuse, t.specular, t.shape_u).pdf(wo, wi);
+    }
+    std::optional<LobeDraw> lobe_sample(const SurfaceTerms& t, const Vec3& wo, float uc, const Vec2& u,
+                                        TransportMode) const override {
+        return BlinnPhongBrdf(t.diffuse, t.specular, t.shape_u).sample(wo, uc, u);
+    }
+
 protected:
     void local_terms(const TextureLookup& q, SurfaceTerms& t) const override {
         t.diffuse = m_kd.eval(q);

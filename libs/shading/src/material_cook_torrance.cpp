@@ -52,6 +52,19 @@ public:
         return f.eval(wo, wi) * (c == Convention::physical ? wi.z : wi.z * kPi);
     }
 
+    // Sampled: the physical model of brdf.hpp with its own sampler.
+    bool has_lobes() const override { return true; }
+    RGB lobe_eval(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
+        return brdf(t).eval(wo, wi);
+    }
+    float lobe_pdf(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
+        return brdf(t).pdf(wo, wi);
+    }
+    std::optional<LobeDraw> lobe_sample(const SurfaceTerms& t, const Vec3& wo, float uc, const Vec2& u,
+                                        TransportMode) const override {
+        return brdf(t).sample(wo, uc, u);
+    }
+
 protected:
     void local_terms(const TextureLookup& q, SurfaceTerms& t) const override {
         t.diffuse = m_kd.eval(q);
@@ -60,6 +73,10 @@ protected:
     }
 
 private:
+    CookTorranceBrdf brdf(const SurfaceTerms& t) const {
+        return {t.diffuse, t.specular, MicrofacetDistribution::from_roughness(m_model, t.shape_u), m_fresnel};
+    }
+
     ColourChannel m_kd, m_ks;
     ScalarChannel m_roughness;
     MicrofacetModel m_model;
