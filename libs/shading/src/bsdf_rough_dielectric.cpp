@@ -33,8 +33,11 @@ std::optional<RoughDielectricBsdf::Pair> RoughDielectricBsdf::pair(const Vec3& w
     // A microfacet seen from its back by either direction takes no part.
     if (!(glm::dot(wo, m) * wo.z > 0.0f) || !(glm::dot(wi, m) * wi.z > 0.0f)) return std::nullopt;
     p.m = m;
-    // n_incident / n_transmitted for light on wo's side; the same reflectance as from wi's side.
-    p.fresnel = fresnel_dielectric(std::abs(glm::dot(wo, m)), p.n_o / index(-wo.z));
+    // The same reflectance from either side of a refraction pair, worked out from the optically thinner one,
+    // where no cosine sits near the critical angle: swapping wo and wi then gives the same number bit for
+    // bit, and the generalised reciprocity holds to rounding.
+    const Vec3& thin = p.reflect || p.n_o <= p.n_i ? wo : wi;
+    p.fresnel = fresnel_dielectric(std::abs(glm::dot(thin, m)), index(thin.z) / index(-thin.z));
     return p;
 }
 
