@@ -21,7 +21,7 @@ struct DeltaCase {
     std::string label;
     std::shared_ptr<const Material> material;
     float cos_o;
-    double expected;  // probability of the counted outcome
+    double expected;    // probability of the counted outcome
     LobeFlags counted;  // the flags a counted draw has
 };
 
@@ -40,8 +40,7 @@ std::vector<DeltaCase> delta_cases() {
     for (float c : {0.9f, 0.6f, -0.5f}) add_glass("air bubble in glass", shell, 1.0f, 1.5f, c);
     // A cut-out lets 1 - opacity through; the rest is Lambert.
     const auto leaf = make_material("lambert", Params().set("albedo", 0.5).set("opacity", 0.6));
-    for (float c : {0.8f, -0.3f})
-        cases.push_back({"cut-out", leaf, c, 0.4, kLobeSpecular | kLobeTransmission});
+    for (float c : {0.8f, -0.3f}) cases.push_back({"cut-out", leaf, c, 0.4, kLobeSpecular | kLobeTransmission});
     // kr and kt without Fresnel, on a Lambert base: chances 0.2, 0.3 and 0.5 (= 1 - kr - kt).
     const auto coated = make_material("lambert", Params().set("albedo", 0.5).set("kr", 0.2).set("kt", 0.3));
     cases.push_back({"kr on lambert", coated, 0.6f, 0.2, kLobeSpecular | kLobeReflection});
@@ -63,7 +62,8 @@ TEST_CASE("delta lobes are chosen as often as Fresnel and the weights say", "[sh
         int counted = 0, off_weight = 0;
         for (int k = 0; k < n; ++k) {
             const float uc = rng.uniform();
-            const std::optional<BsdfSample> s = d.material->sample(t, wo, uc, rng.uniform2(), TransportMode::importance);
+            const std::optional<BsdfSample> s =
+                d.material->sample(t, wo, uc, rng.uniform2(), TransportMode::importance);
             if (s && s->flags == d.counted) ++counted;
             // Importance mode, lobes chosen in proportion to their weights: every delta draw carries exactly 1.
             if (s && (s->flags & kLobeSpecular) && std::abs(s->value.g - 1.0f) > 1e-5f) ++off_weight;

@@ -46,7 +46,10 @@ inline std::vector<MaterialCase> glossy_cases() {
         add("cook-torrance ggx r " + std::to_string(r), "cook-torrance",
             Params().set("kd", 0.3).set("roughness", r).set("distribution", std::string("ggx")));
         add("cook-torrance beckmann gold r " + std::to_string(r), "cook-torrance",
-            Params().set("roughness", r).set("distribution", std::string("beckmann")).set("metal", std::string("gold")));
+            Params()
+                .set("roughness", r)
+                .set("distribution", std::string("beckmann"))
+                .set("metal", std::string("gold")));
         add("rough-dielectric ggx r " + std::to_string(r), "rough-dielectric", Params().set("roughness", r), true);
     }
     add("rough-dielectric beckmann r 0.3", "rough-dielectric",
@@ -69,7 +72,8 @@ inline std::vector<Vec3> lobe_hints(const Vec3& wo) {
     std::vector<Vec3> hints{Vec3(-wo.x, -wo.y, wo.z)};
     for (float eta : {1.0f / 1.5f, 1.5f}) {
         const float cos2_t = 1.0f - eta * eta * (1.0f - wo.z * wo.z);
-        if (cos2_t > 0.0f) hints.emplace_back(-eta * wo.x, -eta * wo.y, wo.z > 0.0f ? -std::sqrt(cos2_t) : std::sqrt(cos2_t));
+        if (cos2_t > 0.0f)
+            hints.emplace_back(-eta * wo.x, -eta * wo.y, wo.z > 0.0f ? -std::sqrt(cos2_t) : std::sqrt(cos2_t));
     }
     return hints;
 }

@@ -70,13 +70,15 @@ TEST_CASE("sample gives the value and pdf that eval and pdf give for its directi
     }
 }
 
-TEST_CASE("albedo never exceeds 1 in importance mode and is 1 for lossless smooth materials",
-          "[shading][sampling]") {
+TEST_CASE("albedo never exceeds 1 in importance mode and is 1 for lossless smooth materials", "[shading][sampling]") {
     std::vector<MaterialCase> cases = glossy_cases();
     // The energy-conserving limits of each model: kd + ks = 1, white metal-like lobes.
-    cases.push_back({"phong kd 0.5 ks 0.5 e 1", make_material("phong", Params().set("kd", 0.5).set("ks", 0.5).set("exponent", 1.0))});
-    cases.push_back({"blinn-phong kd 0.5 ks 0.5 e 10", make_material("blinn-phong", Params().set("kd", 0.5).set("ks", 0.5).set("exponent", 10.0))});
-    cases.push_back({"ashikhmin-shirley rd 1 rs 1", make_material("ashikhmin-shirley", Params().set("rd", 1.0).set("rs", 1.0).set("nu", 10.0))});
+    cases.push_back({"phong kd 0.5 ks 0.5 e 1",
+                     make_material("phong", Params().set("kd", 0.5).set("ks", 0.5).set("exponent", 1.0))});
+    cases.push_back({"blinn-phong kd 0.5 ks 0.5 e 10",
+                     make_material("blinn-phong", Params().set("kd", 0.5).set("ks", 0.5).set("exponent", 10.0))});
+    cases.push_back({"ashikhmin-shirley rd 1 rs 1",
+                     make_material("ashikhmin-shirley", Params().set("rd", 1.0).set("rs", 1.0).set("nu", 10.0))});
     cases.push_back({"lambert albedo 1", make_material("lambert", Params().set("albedo", 1.0))});
     // Cook-Torrance with a Lambert base is not energy conserving by design (the 1982 model does not weigh kd
     // by 1 - F: brdf.hpp); its lobe alone is, with kd = 0.
@@ -137,10 +139,9 @@ TEST_CASE("rough transmission obeys the generalised reciprocity and its adjoint"
     for (double r : {0.05, 0.3, 0.9}) {
         for (const char* ior_outside : {"1", "1.5"}) {
             const bool inverted = std::string(ior_outside) == "1.5";  // a bubble: the dense side is outside
-            const auto m = make_material("rough-dielectric", Params()
-                                                                 .set("roughness", r)
-                                                                 .set("ior", inverted ? 1.0 : 1.5)
-                                                                 .set("ior_outside", inverted ? 1.5 : 1.0));
+            const auto m = make_material(
+                "rough-dielectric",
+                Params().set("roughness", r).set("ior", inverted ? 1.0 : 1.5).set("ior_outside", inverted ? 1.5 : 1.0));
             const SurfaceTerms t = m->terms(TextureLookup{});
             const float n_above = inverted ? 1.5f : 1.0f, n_below = inverted ? 1.0f : 1.5f;
             int compared = 0;
@@ -162,8 +163,7 @@ TEST_CASE("rough transmission obeys the generalised reciprocity and its adjoint"
     }
 }
 
-TEST_CASE("smooth glass scales radiance by the squared ratio of indices across the interface",
-          "[shading][sampling]") {
+TEST_CASE("smooth glass scales radiance by the squared ratio of indices across the interface", "[shading][sampling]") {
     const auto glass = make_material("glass", {});
     const SurfaceTerms t = glass->terms(TextureLookup{});
     for (float c : {0.9f, 0.3f, -0.9f}) {

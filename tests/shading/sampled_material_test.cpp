@@ -19,7 +19,8 @@ namespace {
 
 int chi_square_test_count() {
     int n = 0;
-    for (const MaterialCase& m : glossy_cases()) n += static_cast<int>((m.transmits ? dielectric_cosines() : opaque_cosines()).size());
+    for (const MaterialCase& m : glossy_cases())
+        n += static_cast<int>((m.transmits ? dielectric_cosines() : opaque_cosines()).size());
     return n;
 }
 

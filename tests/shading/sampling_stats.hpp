@@ -64,9 +64,7 @@ inline double regularised_gamma_q(double a, double x) { return regularised_gamma
 
 /// The probability that a chi-square variable with `dof` degrees of freedom exceeds `statistic` (the p-value),
 /// 1 - P(dof / 2, statistic / 2), with full relative precision far in the tail.
-inline double chi_square_survival(double statistic, int dof) {
-    return regularised_gamma_q(0.5 * dof, 0.5 * statistic);
-}
+inline double chi_square_survival(double statistic, int dof) { return regularised_gamma_q(0.5 * dof, 0.5 * statistic); }
 
 /// Two-sided exact binomial test: twice the smaller tail probability of seeing k successes in n trials of
 /// probability p, capped at 1.
@@ -85,9 +83,7 @@ inline double binomial_p_value(int k, int n, double p) {
 
 /// The significance level for each of `tests` independent tests so that all of them pass with probability
 /// 1 - family_alpha when every null hypothesis holds (Sidak).
-inline double sidak_level(double family_alpha, int tests) {
-    return 1.0 - std::pow(1.0 - family_alpha, 1.0 / tests);
-}
+inline double sidak_level(double family_alpha, int tests) { return 1.0 - std::pow(1.0 - family_alpha, 1.0 / tests); }
 
 /// The unit direction with cos(theta) = c and azimuth phi (theta from +z).
 inline Vec3 direction_at(double c, double phi) {
@@ -101,8 +97,8 @@ inline Vec3 direction_at(double c, double phi) {
 /// error estimate, and the piece with the largest error is split next until the errors sum below the
 /// tolerance. A lobe narrower than the first nodes' spacing would fall between them, so pieces holding a
 /// "hint" (a direction where a narrow lobe peaks: the mirror and refracted directions) are first split into a
-/// mesh graded towards it, down to hint_size radians across: lobes of roughness 1e-3 and exponents of 1e4 are then found,
-/// whichever cell they peak in. Likewise pieces whose nodes see both zero and non-zero density (the edge of a
+/// mesh graded towards it, down to hint_size radians across: lobes of roughness 1e-3 and exponents of 1e4 are then
+/// found, whichever cell they peak in. Likewise pieces whose nodes see both zero and non-zero density (the edge of a
 /// lobe's support inside a cell: a rough dielectric's microfacets turn away from the viewer along a curve) are
 /// split until below edge_size radians, since a jump hides from the error estimate when no node falls beyond it.
 class SphereQuadrature {
@@ -130,8 +126,8 @@ public:
             // kHintReach of it), so a lobe of any width centred there, even one stretched a hundredfold at
             // grazing incidence, is crossed by several nodes.
             const double d = hint_distance(p.r);
-            const bool split = (d < kHintReach && size > std::max(m_hint_size, kGrading * d)) ||
-                               (size > m_edge_size && p.mixed);
+            const bool split =
+                (d < kHintReach && size > std::max(m_hint_size, kGrading * d)) || (size > m_edge_size && p.mixed);
             if (!split || (budget -= 4) <= 0) {
                 heap.push_back(p);
                 continue;
@@ -211,8 +207,8 @@ private:
         // 5-point Gauss-Legendre nodes and weights on [-1, 1].
         static constexpr double kX[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
                                          0.9061798459386640};
-        static constexpr double kW[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                         0.4786286704993665, 0.2369268850561891};
+        static constexpr double kW[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                                         0.2369268850561891};
         const double hc = 0.5 * (r.c1 - r.c0), mc = 0.5 * (r.c1 + r.c0);
         const double hp = 0.5 * (r.phi1 - r.phi0), mp = 0.5 * (r.phi1 + r.phi0);
         double sum = 0.0, largest = 0.0;
@@ -260,7 +256,7 @@ private:
 
     // A jump inside a cell would never meet an absolute tolerance; the densities tested are continuous, and
     // the budget keeps a mistaken one from hanging the test.
-    static constexpr long kBudget = 40000;  // rules per starting rectangle
+    static constexpr long kBudget = 40000;      // rules per starting rectangle
     static constexpr double kHintReach = 0.05;  // radians
     static constexpr double kGrading = 0.25;
     Density m_f;
@@ -273,10 +269,10 @@ struct ChiSquareResult {
     double statistic = 0.0;
     int dof = 0;
     double p_value = 1.0;
-    double pdf_integral = 0.0;   // the density's integral over the sphere
-    int samples_outside = 0;     // draws the density does not describe (lost, or delta lobes)
-    std::string failure;         // a sample where the density says none can be: its cell
-    std::string worst;           // the bin that adds most to the statistic, for the report
+    double pdf_integral = 0.0;  // the density's integral over the sphere
+    int samples_outside = 0;    // draws the density does not describe (lost, or delta lobes)
+    std::string failure;        // a sample where the density says none can be: its cell
+    std::string worst;          // the bin that adds most to the statistic, for the report
 };
 
 /// \brief Draws n directions from `sample` (nullopt: lost, or a delta lobe the density does not cover),
@@ -308,9 +304,9 @@ inline ChiSquareResult chi_square_test(const std::function<std::optional<Vec3>(R
     double total = 0.0;
     for (int i = 0; i < n_c; ++i)
         for (int j = 0; j < n_phi; ++j) {
-            const double p = quadrature.integrate(-1.0 + 2.0 * i / n_c, -1.0 + 2.0 * (i + 1) / n_c,
-                                                  2.0 * std::numbers::pi * j / n_phi,
-                                                  2.0 * std::numbers::pi * (j + 1) / n_phi);
+            const double p =
+                quadrature.integrate(-1.0 + 2.0 * i / n_c, -1.0 + 2.0 * (i + 1) / n_c,
+                                     2.0 * std::numbers::pi * j / n_phi, 2.0 * std::numbers::pi * (j + 1) / n_phi);
             expected[i * n_phi + j] = p * n;
             total += p;
         }
@@ -322,8 +318,8 @@ inline ChiSquareResult chi_square_test(const std::function<std::optional<Vec3>(R
         if (observed[b] > 0.0 && expected[b] < 1e-4) {
             result.failure = b == cells ? std::string("lost or delta draws")
                                         : "cell c " + std::to_string(b / n_phi) + " phi " + std::to_string(b % n_phi);
-            result.failure += ": " + std::to_string(observed[b]) + " draws, " + std::to_string(expected[b]) +
-                              " expected";
+            result.failure +=
+                ": " + std::to_string(observed[b]) + " draws, " + std::to_string(expected[b]) + " expected";
             result.p_value = 0.0;
             return result;
         }
@@ -335,9 +331,10 @@ inline ChiSquareResult chi_square_test(const std::function<std::optional<Vec3>(R
             const double term = (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
             if (term > worst) {
                 worst = term;
-                result.worst = (b == cells ? std::string("outside") : "cell c " + std::to_string(b / n_phi) + " phi " +
-                                                                         std::to_string(b % n_phi)) +
-                               ": observed " + std::to_string(observed[b]) + " expected " + std::to_string(expected[b]);
+                result.worst =
+                    (b == cells ? std::string("outside")
+                                : "cell c " + std::to_string(b / n_phi) + " phi " + std::to_string(b % n_phi)) +
+                    ": observed " + std::to_string(observed[b]) + " expected " + std::to_string(expected[b]);
             }
         }
         if (expected[b] < 5.0) {

@@ -21,9 +21,7 @@ RGB LambertBrdf::eval(const Vec3& wo, const Vec3& wi) const {
     return same_hemisphere_above(wo, wi) ? m_albedo * kInvPi : RGB{};
 }
 
-float LambertBrdf::pdf(const Vec3& wo, const Vec3& wi) {
-    return same_hemisphere_above(wo, wi) ? wi.z * kInvPi : 0.0f;
-}
+float LambertBrdf::pdf(const Vec3& wo, const Vec3& wi) { return same_hemisphere_above(wo, wi) ? wi.z * kInvPi : 0.0f; }
 
 std::optional<LobeDraw> LambertBrdf::sample(const Vec3& wo, const Vec2& u) {
     if (!(wo.z > 0.0f)) return std::nullopt;
@@ -91,8 +89,8 @@ float BlinnPhongBrdf::pdf(const Vec3& wo, const Vec3& wi) const {
     const float p_lobe = detail::specular_probability(channel_mean(m_kd), channel_mean(m_ks));
     if (!same_hemisphere_above(wo, wi) || p_lobe < 0.0f) return 0.0f;
     const Vec3 h = detail::half_vector(wo, wi);
-    const float pdf_h = (m_exponent + 1.0f) * (0.5f * kInvPi) *
-                        detail::pow_one_minus(h.x * h.x + h.y * h.y, 0.5f * m_exponent);
+    const float pdf_h =
+        (m_exponent + 1.0f) * (0.5f * kInvPi) * detail::pow_one_minus(h.x * h.x + h.y * h.y, 0.5f * m_exponent);
     const float wo_h = glm::dot(wo, h);
     const float lobe = wo_h > 0.0f ? pdf_h / (4.0f * wo_h) : 0.0f;
     return (1.0f - p_lobe) * wi.z * kInvPi + p_lobe * lobe;

@@ -16,7 +16,7 @@ RGB clamp_below_at_zero(const RGB& c) { return {std::max(0.0f, c.r), std::max(0.
 /// The mixture's weights for one wo, and where its delta lobes go.
 struct Mixture {
     enum Lobe { own, reflect, transmit, pass, count };
-    std::array<RGB, count> weight;     // each already times a (or 1 - a for pass)
+    std::array<RGB, count> weight;      // each already times a (or 1 - a for pass)
     std::array<float, count> chance{};  // probabilities of choosing each lobe in sample(); sum 1 (or all 0)
     Vec3 refracted;                     // where T goes (valid when weight[transmit] is not black)
     float radiance_scale = 1.0f;        // (n_wo / n_wi)^2 for T in radiance mode

@@ -97,7 +97,6 @@ public:
     std::optional<BsdfSample> sample(const SurfaceTerms& terms, const Vec3& wo, float uc, const Vec2& u,
                                      TransportMode mode) const;
 
-
     /// The fraction of light a shadow ray keeps crossing this surface: (1 - opacity) + opacity kt.
     RGB shadow_transmittance(const TextureLookup& lookup) const {
         if (m_constant_shadow) return m_shadow;
@@ -165,9 +164,9 @@ private:
 
 using MaterialRegistry = Registry<Material>;
 
-/// Registers lambert, phong, blinn-phong, cook-torrance, ashikhmin-shirley, mirror, glass and rough-dielectric. Each doc() lists the
-/// parameters; the Whitted parameters (kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption) are accepted
-/// by all.
+/// Registers lambert, phong, blinn-phong, cook-torrance, ashikhmin-shirley, mirror, glass and rough-dielectric. Each
+/// doc() lists the parameters; the Whitted parameters (kr, kt, ior, ior_outside, fresnel, emission, opacity,
+/// absorption) are accepted by all.
 void register_builtins(MaterialRegistry& registry);
 
 /// A registry with category "material" and every built-in registered.

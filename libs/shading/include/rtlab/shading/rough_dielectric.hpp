@@ -39,9 +39,9 @@ public:
 private:
     /// What eval and pdf share about one pair of directions.
     struct Pair {
-        Vec3 m;                     // the half vector, m.z > 0
+        Vec3 m;                        // the half vector, m.z > 0
         float n_o = 1.0f, n_i = 1.0f;  // indices on wo's and wi's sides
-        float fresnel = 0.0f;       // reflectance at the microfacet, seen from wo's side
+        float fresnel = 0.0f;          // reflectance at the microfacet, seen from wo's side
         bool reflect = false;
     };
     std::optional<Pair> pair(const Vec3& wo, const Vec3& wi) const;
