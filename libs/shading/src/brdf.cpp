@@ -48,20 +48,16 @@ float PhongBrdf::pdf(const Vec3& wo, const Vec3& wi) const {
     if (!same_hemisphere_above(wo, wi) || p_lobe < 0.0f) return 0.0f;
     const Vec3 d = Vec3(-wo.x, -wo.y, wo.z) - wi;  // as in eval: 1 - cos(alpha) from the chord
     const float lobe = (m_exponent + 1.0f) * (0.5f * kInvPi) * detail::pow_one_minus(0.5f * glm::dot(d, d), m_exponent);
-    return (1.0f - p_lobe) * wi.z * kInvPi + p_lobe * lobe;
+    return detail::two_part_pdf(p_lobe, wi.z, lobe);
 }
 
 std::optional<LobeDraw> PhongBrdf::sample(const Vec3& wo, float uc, const Vec2& u) const {
     const float p_lobe = detail::specular_probability(channel_mean(m_kd), channel_mean(m_ks));
     if (!(wo.z > 0.0f) || p_lobe < 0.0f) return std::nullopt;
-    LobeDraw draw;
-    if (uc < p_lobe) {
-        draw = {sample_power_cosine(Vec3(-wo.x, -wo.y, wo.z), m_exponent, u), kLobeGlossy | kLobeReflection};
-    } else {
-        draw = {sample_cosine_hemisphere(u), kLobeDiffuse | kLobeReflection};
-    }
-    if (!(draw.wi.z > 0.0f)) return std::nullopt;  // the lobe reaches below the horizon: absorbed
-    return draw;
+    // A lobe reaching below the horizon loses those draws (absorbed).
+    return detail::draw_two_part(p_lobe, uc, u, [&]() -> std::optional<Vec3> {
+        return sample_power_cosine(Vec3(-wo.x, -wo.y, wo.z), m_exponent, u);
+    });
 }
 
 BlinnPhongBrdf::BlinnPhongBrdf(const RGB& kd, const RGB& ks, float exponent)
@@ -93,22 +89,15 @@ float BlinnPhongBrdf::pdf(const Vec3& wo, const Vec3& wi) const {
         (m_exponent + 1.0f) * (0.5f * kInvPi) * detail::pow_one_minus(h.x * h.x + h.y * h.y, 0.5f * m_exponent);
     const float wo_h = glm::dot(wo, h);
     const float lobe = wo_h > 0.0f ? pdf_h / (4.0f * wo_h) : 0.0f;
-    return (1.0f - p_lobe) * wi.z * kInvPi + p_lobe * lobe;
+    return detail::two_part_pdf(p_lobe, wi.z, lobe);
 }
 
 std::optional<LobeDraw> BlinnPhongBrdf::sample(const Vec3& wo, float uc, const Vec2& u) const {
     const float p_lobe = detail::specular_probability(channel_mean(m_kd), channel_mean(m_ks));
     if (!(wo.z > 0.0f) || p_lobe < 0.0f) return std::nullopt;
-    LobeDraw draw;
-    if (uc < p_lobe) {
-        const Vec3 h = sample_power_cosine(Vec3(0.0f, 0.0f, 1.0f), m_exponent, u);
-        if (!(glm::dot(wo, h) > 0.0f)) return std::nullopt;
-        draw = {detail::reflect_about(wo, h), kLobeGlossy | kLobeReflection};
-    } else {
-        draw = {sample_cosine_hemisphere(u), kLobeDiffuse | kLobeReflection};
-    }
-    if (!(draw.wi.z > 0.0f)) return std::nullopt;
-    return draw;
+    return detail::draw_two_part(p_lobe, uc, u, [&] {
+        return detail::mirror_about(wo, sample_power_cosine(Vec3(0.0f, 0.0f, 1.0f), m_exponent, u));
+    });
 }
 
 }  // namespace rtlab

@@ -31,7 +31,7 @@ float CookTorranceBrdf::pdf(const Vec3& wo, const Vec3& wi) const {
     const Vec3 h = detail::half_vector(wo, wi);
     const float wo_h = glm::dot(wo, h);
     const float lobe = wo_h > 0.0f ? m_distribution.normal_pdf(wo, h) / (4.0f * wo_h) : 0.0f;
-    return (1.0f - p_lobe) * wi.z * kInvPi + p_lobe * lobe;
+    return detail::two_part_pdf(p_lobe, wi.z, lobe);
 }
 
 std::optional<LobeDraw> CookTorranceBrdf::sample(const Vec3& wo, float uc, const Vec2& u) const {
@@ -39,16 +39,8 @@ std::optional<LobeDraw> CookTorranceBrdf::sample(const Vec3& wo, float uc, const
     const float p_lobe =
         detail::specular_probability(channel_mean(m_kd), channel_mean(m_ks * m_fresnel.eval(std::min(wo.z, 1.0f))));
     if (p_lobe < 0.0f) return std::nullopt;
-    LobeDraw draw;
-    if (uc < p_lobe) {
-        const Vec3 m = m_distribution.sample_normal(wo, u);
-        if (!(glm::dot(wo, m) > 0.0f)) return std::nullopt;
-        draw = {detail::reflect_about(wo, m), kLobeGlossy | kLobeReflection};
-    } else {
-        draw = {sample_cosine_hemisphere(u), kLobeDiffuse | kLobeReflection};
-    }
-    if (!(draw.wi.z > 0.0f)) return std::nullopt;
-    return draw;
+    return detail::draw_two_part(p_lobe, uc, u,
+                                 [&] { return detail::mirror_about(wo, m_distribution.sample_normal(wo, u)); });
 }
 
 }  // namespace rtlab

@@ -14,6 +14,7 @@
 #include <rtlab/shading/brdf.hpp>
 
 #include "builtin_params.hpp"
+#include "sampled_reflection.hpp"
 
 #include <algorithm>
 #include <string>
@@ -21,11 +22,11 @@
 namespace rtlab::shading_detail {
 
 namespace {
-class AshikhminShirleyMaterial final : public Material {
+class AshikhminShirleyMaterial final : public SampledReflection<AshikhminShirleyMaterial> {
 public:
     AshikhminShirleyMaterial(Whitted w, std::shared_ptr<const Texture> rd, std::shared_ptr<const Texture> rs,
                              std::shared_ptr<const Texture> nu, std::shared_ptr<const Texture> nv)
-        : Material(std::move(w)),
+        : SampledReflection(std::move(w)),
           m_rd(std::move(rd)),
           m_rs(std::move(rs)),
           m_nu(std::move(nu), 0.0f, kMaxExponent, 0.0f),
@@ -40,17 +41,9 @@ public:
         return f.eval(wo, wi) * (c == Convention::physical ? wi.z : wi.z * kPi);
     }
 
-    // Sampled: the physical model of brdf.hpp with its own sampler.
-    bool has_lobes() const override { return true; }
-    RGB lobe_eval(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
-        return AshikhminShirleyBrdf(t.diffuse, t.specular, t.shape_u, t.shape_v).eval(wo, wi);
-    }
-    float lobe_pdf(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
-        return AshikhminShirleyBrdf(t.diffuse, t.specular, t.shape_u, t.shape_v).pdf(wo, wi);
-    }
-    std::optional<LobeDraw> lobe_sample(const SurfaceTerms& t, const Vec3& wo, float uc, const Vec2& u,
-                                        TransportMode) const override {
-        return AshikhminShirleyBrdf(t.diffuse, t.specular, t.shape_u, t.shape_v).sample(wo, uc, u);
+    /// The physical model of brdf.hpp at one hit: SampledReflection's lobes.
+    AshikhminShirleyBrdf brdf(const SurfaceTerms& t) const {
+        return AshikhminShirleyBrdf(t.diffuse, t.specular, t.shape_u, t.shape_v);
     }
 
 protected:

@@ -11,17 +11,18 @@
 #include <rtlab/shading/brdf.hpp>
 
 #include "builtin_params.hpp"
+#include "sampled_reflection.hpp"
 
 #include <cmath>
 
 namespace rtlab::shading_detail {
 
 namespace {
-class BlinnPhongMaterial final : public Material {
+class BlinnPhongMaterial final : public SampledReflection<BlinnPhongMaterial> {
 public:
     BlinnPhongMaterial(Whitted w, std::shared_ptr<const Texture> kd, std::shared_ptr<const Texture> ks,
                        std::shared_ptr<const Texture> exponent)
-        : Material(std::move(w)),
+        : SampledReflection(std::move(w)),
           m_kd(std::move(kd)),
           m_ks(std::move(ks)),
           m_exponent(std::move(exponent), 0.0f, kMaxExponent, 0.0f) {
@@ -36,18 +37,8 @@ public:
         return t.diffuse * wi.z + t.specular * std::pow(nh, t.shape_u);
     }
 
-    // Sampled: the physical model of brdf.hpp with its own sampler.
-    bool has_lobes() const override { return true; }
-    RGB lobe_eval(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
-        return BlinnPhongBrdf(t.diffuse, t.specular, t.shape_u).eval(wo, wi);
-    }
-    float lobe_pdf(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
-        return BlinnPhongBrdf(t.diffuse, t.specular, t.shape_u).pdf(wo, wi);
-    }
-    std::optional<LobeDraw> lobe_sample(const SurfaceTerms& t, const Vec3& wo, float uc, const Vec2& u,
-                                        TransportMode) const override {
-        return BlinnPhongBrdf(t.diffuse, t.specular, t.shape_u).sample(wo, uc, u);
-    }
+    /// The physical model of brdf.hpp at one hit: SampledReflection's lobes.
+    BlinnPhongBrdf brdf(const SurfaceTerms& t) const { return BlinnPhongBrdf(t.diffuse, t.specular, t.shape_u); }
 
 protected:
     void local_terms(const TextureLookup& q, SurfaceTerms& t) const override {

@@ -25,6 +25,7 @@
 #include <rtlab/shading/optics.hpp>
 
 #include "builtin_params.hpp"
+#include "sampled_reflection.hpp"
 
 #include <algorithm>
 #include <string>
@@ -32,11 +33,11 @@
 namespace rtlab::shading_detail {
 
 namespace {
-class CookTorranceMaterial final : public Material {
+class CookTorranceMaterial final : public SampledReflection<CookTorranceMaterial> {
 public:
     CookTorranceMaterial(Whitted w, std::shared_ptr<const Texture> kd, std::shared_ptr<const Texture> ks,
                          std::shared_ptr<const Texture> roughness, MicrofacetModel model, const Fresnel& fresnel)
-        : Material(std::move(w)),
+        : SampledReflection(std::move(w)),
           m_kd(std::move(kd)),
           m_ks(std::move(ks)),
           m_roughness(std::move(roughness), 0.0f, 1.0f, 1.0f),  // a NaN roughness is matte, never a spike
@@ -52,17 +53,9 @@ public:
         return f.eval(wo, wi) * (c == Convention::physical ? wi.z : wi.z * kPi);
     }
 
-    // Sampled: the physical model of brdf.hpp with its own sampler.
-    bool has_lobes() const override { return true; }
-    RGB lobe_eval(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
-        return brdf(t).eval(wo, wi);
-    }
-    float lobe_pdf(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode) const override {
-        return brdf(t).pdf(wo, wi);
-    }
-    std::optional<LobeDraw> lobe_sample(const SurfaceTerms& t, const Vec3& wo, float uc, const Vec2& u,
-                                        TransportMode) const override {
-        return brdf(t).sample(wo, uc, u);
+    /// The physical model of brdf.hpp at one hit: SampledReflection's lobes.
+    CookTorranceBrdf brdf(const SurfaceTerms& t) const {
+        return {t.diffuse, t.specular, MicrofacetDistribution::from_roughness(m_model, t.shape_u), m_fresnel};
     }
 
 protected:
@@ -73,10 +66,6 @@ protected:
     }
 
 private:
-    CookTorranceBrdf brdf(const SurfaceTerms& t) const {
-        return {t.diffuse, t.specular, MicrofacetDistribution::from_roughness(m_model, t.shape_u), m_fresnel};
-    }
-
     ColourChannel m_kd, m_ks;
     ScalarChannel m_roughness;
     MicrofacetModel m_model;
