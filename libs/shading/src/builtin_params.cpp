@@ -61,6 +61,11 @@ ScalarChannel::ScalarChannel(std::shared_ptr<const Texture> texture, float lo, f
 
 float ScalarChannel::clamp(float x) const { return x == x ? std::clamp(x, m_lo, m_hi) : m_nan; }
 
+MicrofacetModel read_microfacet_model(const Params& p) {
+    return one_of(p, "distribution", "ggx", {"ggx", "beckmann"}) == "ggx" ? MicrofacetModel::ggx
+                                                                          : MicrofacetModel::beckmann;
+}
+
 const char* const kWhittedDoc =
     " Whitted terms (all materials): kr mirror reflection, kt transmission (colours or textures); ior index "
     "inside (default 1, glass 1.5), ior_outside (default 1); fresnel: weight kr by F and kt by 1 - F; "

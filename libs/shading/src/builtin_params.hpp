@@ -5,6 +5,7 @@
 // "constant or texture" convention is the textures library's (rtlab/textures/texture_param.hpp).
 #include <rtlab/core/param_checks.hpp>
 #include <rtlab/core/params.hpp>
+#include <rtlab/shading/brdf.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>
 #include <rtlab/textures/texture.hpp>
@@ -69,6 +70,16 @@ struct WhittedDefaults {
 /// Reads kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption (every material's parameters).
 /// Constant kr + kt > 1 (without Fresnel) or kr, kt > 1 (with it) are rejected.
 Material::Whitted read_whitted(const Params& params, const WhittedDefaults& defaults);
+
+/// The Whitted defaults of a dielectric model: ior 1.5, kr and kt 0 (its own lobes reflect and refract).
+inline WhittedDefaults glass_defaults() {
+    WhittedDefaults d;
+    d.ior = 1.5f;
+    return d;
+}
+
+/// The "distribution" parameter of the microfacet models: ggx (default) or beckmann.
+MicrofacetModel read_microfacet_model(const Params& params);
 
 /// The documentation of the Whitted parameters, appended to every material's doc string.
 extern const char* const kWhittedDoc;

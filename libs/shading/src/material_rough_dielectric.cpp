@@ -68,12 +68,8 @@ void register_rough_dielectric(MaterialRegistry& registry) {
         "rough-dielectric",
         [](const Params& p) -> std::shared_ptr<Material> {
             auto roughness = scalar_param(p, "roughness", 0.2f, 0.0f, 1.0f);
-            const MicrofacetModel model = one_of(p, "distribution", "ggx", {"ggx", "beckmann"}) == "ggx"
-                                              ? MicrofacetModel::ggx
-                                              : MicrofacetModel::beckmann;
-            WhittedDefaults d;
-            d.ior = 1.5f;
-            Material::Whitted w = read_whitted(p, d);
+            const MicrofacetModel model = read_microfacet_model(p);
+            Material::Whitted w = read_whitted(p, glass_defaults());
             if (w.ior_inside == w.ior_outside)
                 fail_param(p, "ior", "equals ior_outside: an index-matched interface does not scatter");
             return std::make_shared<RoughDielectricMaterial>(std::move(w), std::move(roughness), model);
