@@ -11,6 +11,8 @@ packages=(
   libembree-dev      # optional reference backend; the build works without it
   python3-matplotlib # charts (scripts/charts.sh, run with /usr/bin/python3)
   python3-pil        # the demo's animated GIF (scripts/demo.sh, run with /usr/bin/python3)
+  glmark2-data       # the course data without ../shared: the Stanford bunny (data/assets.tsv)
+  openuniverse-common # ... and the planet maps and Saturn's ring strip (data/assets.tsv)
 )
 
 missing=()

@@ -100,48 +100,32 @@ Params sky_params(const TextureRegistry& textures, const std::string& folder) {
     return p;
 }
 
-SolarAssets load_solar_assets(const SearchPath& data, bool procedural) {
+SolarAssets load_solar_assets(const DataPath& data, bool procedural) {
     const TextureRegistry textures = make_texture_registry();
     SolarAssets assets;
-    std::vector<std::string> missing;
-    std::string found_in;
-    auto find = [&](const std::filesystem::path& name) -> std::string {
-        if (procedural) return {};
-        const auto f = data.find(name);
-        if (!f) {
-            missing.push_back(name.string());
-            return {};
-        }
-        if (found_in.empty()) found_in = f->parent_path().string();
-        return f->string();
+    auto find = [&](const std::string& name) -> std::string {
+        const auto f = procedural ? std::nullopt : data.find(name);
+        assets.uses.push_back({name, f});
+        return f ? f->path.string() : std::string();
     };
     for (std::size_t i = 0; i < bodies().size(); ++i) {
-        const std::string file = find(std::filesystem::path("textures") / bodies()[i].texture);
+        const std::string file = find("textures/" + std::string(bodies()[i].texture));
         assets.maps.push_back(textures.create("image", planet_map_params(textures, i, file)));
     }
-    assets.ring = textures.create("image", ring_params(textures, find("textures/saturn_ring.png")));
-    std::string folder;
-    bool faces_found = true;
-    for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"}) {
-        const std::string file = find(std::filesystem::path("textures/skybox") / (std::string(face) + ".jpg"));
-        if (file.empty()) faces_found = false;
-        if (faces_found && folder.empty()) folder = std::filesystem::path(file).parent_path().string();
-    }
-    assets.sky = textures.create("cubemap", sky_params(textures, faces_found ? folder : std::string()));
-    assets.real_textures = !procedural && missing.empty();
-    if (procedural) {
-        assets.note = "textures: procedural (asked for)";
-    } else if (missing.empty()) {
-        assets.note = "textures: images from " + found_in;
-    } else if (found_in.empty()) {
-        assets.note =
-            "textures: procedural (textures/*.jpg, textures/skybox/ and textures/saturn_ring.png not found in " +
-            data.describe() + ")";
-    } else {
-        std::string list;
-        for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
-        assets.note = "textures: images from " + found_in + "; procedural for the missing " + list;
-    }
+    assets.ring = textures.create("image", ring_params(textures, find(kRingName)));
+    // The six faces from one folder, or the procedural field: never a cube of faces from different sources.
+    const std::string sky = kSkyFolder + std::string("/");
+    const auto px = procedural ? std::nullopt : data.find(sky + "px.jpg");
+    std::string folder = px ? px->path.parent_path().string() : std::string();
+    for (const char* face : {"nx", "py", "ny", "pz", "nz"})
+        if (!folder.empty() &&
+            !std::filesystem::is_regular_file(std::filesystem::path(folder) / (face + std::string(".jpg"))))
+            folder.clear();
+    assets.uses.push_back({sky, folder.empty() ? std::nullopt : px});
+    assets.sky = textures.create("cubemap", sky_params(textures, folder));
+    assets.real_textures =
+        std::all_of(assets.uses.begin(), assets.uses.end(), [](const AssetUse& u) { return u.file.has_value(); });
+    assets.note = procedural ? "data: procedural textures (asked for)" : describe_sources(assets.uses);
     return assets;
 }
 

@@ -5,7 +5,7 @@
 /// made by the same registry types with the same parameters (an "image" with "lod": "auto", its procedural
 /// "fallback" baked when the file is missing), and their levels are picked by the same functions
 /// (rtlab/render/texture_level.hpp), so the two render byte-identical images.
-#include <rtlab/core/search_path.hpp>
+#include <rtlab/core/data_path.hpp>
 #include <rtlab/render/render_job.hpp>
 #include <rtlab/textures/mip_map.hpp>
 #include <rtlab/textures/texture.hpp>
@@ -52,13 +52,21 @@ struct SolarAssets {
     std::shared_ptr<Texture> ring;               ///< Saturn's ring strip (colour and alpha)
     std::shared_ptr<Texture> sky;                ///< the star-field cube map
     bool real_textures = false;                  ///< every image was found
-    std::string note;                            ///< which textures are used and from where, for the app to print
+    std::vector<AssetUse> uses;                  ///< each asset's name and the file found (none: procedural)
+    std::string note;  ///< one line: where each texture came from and the credits (describe_sources)
 };
 
-/// Loads the planet maps, ring and star-field faces of ../shared/textures (textures/earth.jpg,
-/// textures/skybox/px.jpg, ...) from `data`; each one that is missing, or all with `procedural`, is made
-/// from its procedural fallback instead (noise per body, a random star field), and the note says which.
-SolarAssets load_solar_assets(const SearchPath& data, bool procedural = false);
+/// The logical name of the ring strip and of the star-field cube map's folder (its faces px.jpg ... nz.jpg).
+inline constexpr const char* kRingName = "textures/saturn_ring.png";
+inline constexpr const char* kSkyFolder = "textures/skybox";
+
+/// Loads the planet maps (textures/earth.jpg, ...), the ring strip (kRingName) and the star-field faces
+/// (kSkyFolder/px.jpg, ...) from `data`: a folder laid out like ../shared, else the data packages' files
+/// (OpenUniverse's maps and its ring strip rings.jpg, whose luminance is the ring's opacity). Each one that is
+/// missing, or all with `procedural`, is made from its procedural fallback instead (noise per body, a random
+/// star field): the packages have no map of the Sun's surface (their sun.jpg is a glow sprite) and no star
+/// field, so those stay procedural without ../shared. The note says which.
+SolarAssets load_solar_assets(const DataPath& data, bool procedural = false);
 
 /// \brief Which picture of the sequence, and how it is filtered.
 struct SolarView {

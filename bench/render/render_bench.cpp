@@ -120,3 +120,10 @@ BENCHMARK_CAPTURE(BM_Render, adaptive_d3, PixelPattern::adaptive, 1)
     ->Arg(2)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
+// The progressive renderer (sobol: Owen-scrambled Sobol offsets, per-pixel double sums, batched camera samples)
+// on the same work as jittered_4spp: the difference is the renderer's overhead per sample.
+BENCHMARK_CAPTURE(BM_Render, sobol_4spp, PixelPattern::sobol, 4)
+    ->Arg(1)
+    ->Arg(2)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);

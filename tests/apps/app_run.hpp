@@ -15,18 +15,27 @@ namespace rtlab::test {
 struct AppRun {
     int status = -1;  // the exit status, -1 when it did not exit normally
     std::string err;
+    std::string out;
 };
 
-inline AppRun run_app(const std::string& exe, const std::string& args, const std::filesystem::path& scratch) {
-    const auto err_file = scratch / "stderr.txt";
-    const std::string command = "'" + exe + "' " + args + " > /dev/null 2> '" + err_file.string() + "'";
+inline std::string read_text(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// Runs `exe args` (a shell command line) with `environment` ("NAME=value ...", through env) added.
+inline AppRun run_app(const std::string& exe, const std::string& args, const std::filesystem::path& scratch,
+                      const std::string& environment = "") {
+    const auto err_file = scratch / "stderr.txt", out_file = scratch / "stdout.txt";
+    const std::string command = (environment.empty() ? "" : "env " + environment + " ") + "'" + exe + "' " + args +
+                                " > '" + out_file.string() + "' 2> '" + err_file.string() + "'";
     const int raw = std::system(command.c_str());
     AppRun run;
     if (raw != -1 && WIFEXITED(raw)) run.status = WEXITSTATUS(raw);
-    std::ifstream in(err_file);
-    std::stringstream text;
-    text << in.rdbuf();
-    run.err = text.str();
+    run.err = read_text(err_file);
+    run.out = read_text(out_file);
     return run;
 }
 

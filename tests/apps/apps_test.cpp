@@ -4,6 +4,7 @@
 #include <rtlab/app/course_app.hpp>
 #include <rtlab/geometry/mesh_io.hpp>
 #include <shared_data.hpp>
+#include <skip.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -79,19 +80,75 @@ TEST_CASE("course apps: data files are looked up in --data-dir, RTLAB_DATA_PATH,
     o.data_dirs = {a};
     // As if the executable were build/release/bin/x of this checkout.
     const auto exe = std::filesystem::path(RTLAB_SOURCE_DIR) / "build" / "release" / "bin" / "x";
-    const SearchPath path = app::course_data_path(o, exe);
-    REQUIRE(path.folders().size() >= 2);
-    CHECK(path.folders()[0] == a);
-    CHECK(path.folders()[1] == b);
-    CHECK(path.find("textures/both.txt") == a / "textures" / "both.txt");  // --data-dir first
+    const DataPath path = app::course_data_path(o, exe, "test");
+    REQUIRE(path.roots().size() >= 2);
+    CHECK(path.roots()[0].folder == a);
+    CHECK(path.roots()[1].folder == b);
+    CHECK(path.find("textures/both.txt")->path == a / "textures" / "both.txt");  // --data-dir first
+    CHECK(path.find("textures/both.txt")->source == "--data-dir " + a.string());
     const auto beside = std::filesystem::path(RTLAB_SOURCE_DIR).parent_path() / "shared";
-    if (std::filesystem::is_directory(beside)) {
-        REQUIRE(path.folders().size() == 3);
-        CHECK(path.folders()[2] == std::filesystem::weakly_canonical(beside));
+    if (std::filesystem::is_directory(beside) && !test::shared_disabled()) {
+        REQUIRE(path.roots().size() == 3);
+        CHECK(path.roots()[2].folder == std::filesystem::weakly_canonical(beside));
     } else {
-        CHECK(path.folders().size() == 2);
+        CHECK(path.roots().size() == 2);
     }
     ::unsetenv("RTLAB_DATA_PATH");
+}
+
+TEST_CASE("course apps: a --data-dir folder that does not exist is a warning naming the program", "[apps]") {
+    const auto dir = test::scratch_dir("apps_missing_data_dir");
+    const std::string out = " -o '" + (dir / "out.pfm").string() + "'";
+    const auto solar =
+        run_app(SOLAR_EXE, "--procedural --width 8 --height 6 --quiet --data-dir /nonexistent" + out, dir);
+    CHECK(solar.status == 0);
+    CHECK(solar.err == "rtlab-solar-system: warning: --data-dir '/nonexistent' does not exist\n");
+    const auto whitted = run_app(
+        WHITTED_EXE, "--width 8 --height 6 --quiet --data-dir /nonexistent --data-dir /nonexistent2" + out, dir);
+    CHECK(whitted.status == 0);
+    CHECK(whitted.err ==
+          "rtlab-whitted: warning: --data-dir '/nonexistent' does not exist\n"
+          "rtlab-whitted: warning: --data-dir '/nonexistent2' does not exist\n");
+    // RTLAB_DATA_PATH's folders too, named by the variable.
+    const auto bunny = run_app(BUNNY_EXE, "--width 8 --height 6 --quiet --mesh /nonexistent.obj" + out, dir,
+                               "RTLAB_DATA_PATH=/nonexistent3");
+    CHECK(bunny.status == 1);
+    CHECK_THAT(bunny.err, Catch::Matchers::StartsWith(
+                              "rtlab-bunny: warning: RTLAB_DATA_PATH '/nonexistent3' does not exist\nrtlab-bunny: "));
+}
+
+TEST_CASE("course apps: a fresh machine without ../shared renders the bunny and the planets from the packages",
+          "[apps]") {
+    // The data path limited to what a user has: no ../shared (RTLAB_NO_SHARED=1), no RTLAB_DATA_PATH, only
+    // the Debian data packages. Each app must say where its data came from and use the real assets.
+    if (!test::packages_installed())
+        return test::skip("glmark2-data and openuniverse-common are not installed (scripts/setup.sh)");
+    const auto dir = test::scratch_dir("apps_fresh_machine");
+    const std::string user = "RTLAB_NO_SHARED=1 RTLAB_DATA_PATH= RTLAB_SHARED_DIR=";
+    const std::string size = " --width 64 --height 48 --threads 2 -o '";
+    const auto bunny = run_app(BUNNY_EXE, "--aa none" + size + (dir / "bunny.pfm").string() + "'", dir, user);
+    REQUIRE(bunny.status == 0);
+    CHECK(bunny.err.empty());
+    CHECK_THAT(bunny.out, Catch::Matchers::Contains("data: models/stanford-bunny.obj from package glmark2-data; "
+                                                    "credits: Stanford bunny: The Stanford 3D Scanning Repository"));
+    CHECK_THAT(bunny.out, Catch::Matchers::Contains("/usr/share/glmark2/models/bunny.obj: 69666 triangles"));
+    const auto solar = run_app(SOLAR_EXE, "--aa none" + size + (dir / "solar.pfm").string() + "'", dir, user);
+    REQUIRE(solar.status == 0);
+    CHECK(solar.err.empty());
+    // Every planet and the rings from the package; only what no package has stays procedural.
+    CHECK_THAT(solar.out, Catch::Matchers::Contains(
+                              "data: textures/sun.jpg, textures/skybox/ procedural; textures/mercury.jpg, "
+                              "textures/venus.jpg, textures/earth.jpg, textures/mars.jpg, textures/jupiter.jpg, "
+                              "textures/saturn.jpg, textures/uranus.jpg, textures/neptune.jpg, "
+                              "textures/saturn_ring.png from package openuniverse-common; credits: OpenUniverse"));
+    // The package maps, not the procedural ones: the picture differs from --procedural's.
+    const auto procedural =
+        run_app(SOLAR_EXE, "--procedural --aa none" + size + (dir / "procedural.pfm").string() + "'", dir, user);
+    REQUIRE(procedural.status == 0);
+    CHECK_FALSE(test::same_pixels(read_pfm(dir / "solar.pfm"), read_pfm(dir / "procedural.pfm")));
+    const auto whitted = run_app(WHITTED_EXE, size.substr(1) + (dir / "whitted.pfm").string() + "'", dir, user);
+    CHECK(whitted.status == 0);
+    CHECK(whitted.err.empty());
 }
 
 TEST_CASE("whitted: adaptive anti-aliasing by default, flags override it", "[apps]") {
@@ -99,11 +156,15 @@ TEST_CASE("whitted: adaptive anti-aliasing by default, flags override it", "[app
     CHECK(job.settings.pattern == PixelPattern::adaptive);
     CHECK(job.whitted.convention == Convention::classic);
     app::CourseOptions o;
+    // --spp alone never switches the pattern: adaptive takes no sample count.
     o.spp = 9;
+    CHECK_THROWS_AS(app::apply_course_options(o, job), app::UsageError);
+    o.aa = "jittered";
     app::apply_course_options(o, job);
     CHECK(job.settings.pattern == PixelPattern::jittered);
     CHECK(job.settings.spp == 9);
     o.aa = "none";
+    o.spp.reset();
     o.seed = 42;
     o.max_depth = 2;
     app::apply_course_options(o, job);
@@ -123,33 +184,35 @@ TEST_CASE("rtlab-whitted writes the image of the scene function, byte for byte",
     CHECK(test::same_pixels(written, render_job(job).image));
 }
 
-TEST_CASE("course apps: bad flags exit 1 with a message", "[apps]") {
+TEST_CASE("course apps: bad flags exit 2 and bad input 1 with a message", "[apps]") {
     const auto dir = test::scratch_dir("apps_flags");
     struct Case {
         const char* exe;
         const char* args;
+        int status;
         const char* message;
     };
     const Case cases[] = {
-        {WHITTED_EXE, "--bogus", "--bogus"},
-        {WHITTED_EXE, "--width 0", "--width"},
-        {WHITTED_EXE, "--aa sideways", "sideways"},
-        {WHITTED_EXE, "--spp many", "--spp"},
-        {WHITTED_EXE, "-o whitted.tiff", "whitted.tiff"},
-        {BUNNY_EXE, "--material velvet", "velvet"},
-        {BUNNY_EXE, "--mesh no-such-mesh.obj", "no-such-mesh.obj"},
-        {SOLAR_EXE, "--frame-range 1:2", "--frames"},
-        {SOLAR_EXE, "--frames 4 --frame-range 3:2", "3:2"},
-        {SOLAR_EXE, "--frames 4 --frame-range 0:5", "0:5"},
-        {SOLAR_EXE, "--frames 4 --frame-range two", "two"},
-        {SOLAR_EXE, "--frames 0", "--frames"},
+        {WHITTED_EXE, "--bogus", 2, "rtlab-whitted: unknown option '--bogus'"},
+        {WHITTED_EXE, "--width 0", 2, "rtlab-whitted: --width: must be at least 1, not 0"},
+        {WHITTED_EXE, "--aa sideways", 2, "rtlab-whitted: --aa: 'sideways' is not one of"},
+        {WHITTED_EXE, "--spp many", 2, "rtlab-whitted: --spp: expected a whole number, not 'many'"},
+        {WHITTED_EXE, "-o whitted.tiff", 2, "rtlab-whitted: -o: 'whitted.tiff': unknown image format"},
+        {BUNNY_EXE, "--material velvet", 2, "rtlab-bunny: --material: 'velvet' is not one of"},
+        {BUNNY_EXE, "--mesh no-such-mesh.obj", 1, "rtlab-bunny: 'no-such-mesh.obj'"},
+        {SOLAR_EXE, "--frame-range 1:2", 2, "rtlab-solar-system: --frame-range needs --frames"},
+        {SOLAR_EXE, "--frames 4 --frame-range 3:2", 2, "3:2"},
+        {SOLAR_EXE, "--frames 4 --frame-range 0:5", 2, "0:5"},
+        {SOLAR_EXE, "--frames 4 --frame-range two", 2, "two"},
+        {SOLAR_EXE, "--frames 0", 2, "rtlab-solar-system: --frames: must be in [1, 100000], not 0"},
     };
     for (const Case& c : cases) {
         INFO(c.exe << " " << c.args);
-        const std::string args = std::string(c.args) + " --quiet --width 8 --height 6";
+        // The case's own values last: a flag given twice takes the last value.
+        const std::string args = "--quiet --width 8 --height 6 " + std::string(c.args);
         const auto run = run_app(c.exe, args, dir);
-        CHECK(run.status == 1);
-        CHECK(run.err.find(c.message) != std::string::npos);
+        CHECK(run.status == c.status);
+        CHECK_THAT(run.err, Catch::Matchers::Contains(c.message));
     }
     // --help is not an error.
     CHECK(run_app(WHITTED_EXE, "--help", dir).status == 0);
@@ -209,21 +272,22 @@ TEST_CASE("rtlab-bunny reports the faces a mesh loader dropped and renders the r
     CHECK_FALSE(std::filesystem::exists(none));
 }
 
-TEST_CASE("rtlab-bunny renders the Stanford bunny in each material", "[apps]") {
-    const auto shared = test::shared_dir();
-    if (!shared) {
-        WARN("skipped: ../shared/models not found (set RTLAB_SHARED_DIR)");
-        return;
-    }
-    const auto dir = test::scratch_dir("apps_bunny");
+namespace {
+
+// Renders rtlab-bunny in each material with its mesh from one data source (the --data-dir root alone).
+void check_bunny_materials(test::DataSource source) {
+    const auto root = test::data_root(source);
+    if (!root)
+        return test::skip(std::string("no ") + test::source_name(source) + " data for models/stanford-bunny.obj");
+    const auto dir = test::scratch_dir(std::string("apps_bunny_") + test::source_name(source));
     for (const char* material : {"diffuse", "phong", "mirror", "glass"}) {
         INFO(material);
         const auto out = dir / (std::string("bunny-") + material + ".pfm");
         std::filesystem::remove(out);
         const auto run = run_app(BUNNY_EXE,
                                  std::string("--width 64 --height 48 --aa none --quiet --material ") + material +
-                                     " --data-dir '" + shared->string() + "' -o '" + out.string() + "'",
-                                 dir);
+                                     " --data-dir '" + root->string() + "' -o '" + out.string() + "'",
+                                 dir, "RTLAB_NO_SHARED=1 RTLAB_DATA_PATH=");
         REQUIRE(run.status == 0);
         const Image image = read_pfm(out);
         // The silhouette is in the middle: the centre differs from what the corners (sky, floor) show there
@@ -234,4 +298,14 @@ TEST_CASE("rtlab-bunny renders the Stanford bunny in each material", "[apps]") {
         CHECK(glm::length(Vec3(centre.r - sky.r, centre.g - sky.g, centre.b - sky.b)) > 0.05f);
         if (std::string(material) == "diffuse") CHECK(centre.r > centre.b + 0.03f);
     }
+}
+
+}  // namespace
+
+TEST_CASE("rtlab-bunny renders the Stanford bunny in each material from ../shared", "[apps]") {
+    check_bunny_materials(test::DataSource::shared);
+}
+
+TEST_CASE("rtlab-bunny renders the Stanford bunny in each material from glmark2-data", "[apps]") {
+    check_bunny_materials(test::DataSource::packages);
 }

@@ -2,6 +2,9 @@
 #include "app_run.hpp"
 
 #include <shared_data.hpp>
+#include <skip.hpp>
+
+#include <rtlab/textures/texture_param.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -17,11 +20,8 @@ using test::run_app;
 
 namespace {
 
-std::optional<SearchPath> shared_path() {
-    const auto dir = test::shared_dir();
-    if (!dir) return std::nullopt;
-    return SearchPath({*dir});
-}
+// Nothing on the data path, not even the packages: every texture procedural.
+const DataPath kNoData({}, false);
 
 const BodyOnScreen& find(const std::vector<BodyOnScreen>& bodies, std::string_view name) {
     for (const auto& b : bodies)
@@ -58,28 +58,60 @@ void check_sun_and_planets(const SolarAssets& assets) {
 }  // namespace
 
 TEST_CASE("solar system: the Sun is bright and the planets lit, procedural textures", "[apps]") {
-    const SolarAssets assets = load_solar_assets(SearchPath{}, false);  // nothing on the path: procedural
+    const SolarAssets assets = load_solar_assets(kNoData, false);
     CHECK_FALSE(assets.real_textures);
     CHECK(assets.note.find("procedural") != std::string::npos);
     check_sun_and_planets(assets);
 }
 
 TEST_CASE("solar system: the Sun is bright and the planets lit, the shared textures", "[apps]") {
-    const auto path = shared_path();
-    if (!path) {
-        WARN("skipped: ../shared/textures not found (set RTLAB_SHARED_DIR)");
-        return;
-    }
+    const auto path = test::pinned_data_path(test::DataSource::shared);
+    if (!path) return test::skip(test::needs_shared("the solar system's images"));
     const SolarAssets assets = load_solar_assets(*path);
     CHECK(assets.real_textures);
-    CHECK(assets.note.find("images from") != std::string::npos);
+    CHECK_THAT(assets.note, Catch::Matchers::Contains("from RTLAB_SHARED_DIR") &&
+                                Catch::Matchers::Contains("Solar System Scope") &&
+                                !Catch::Matchers::Contains("procedural"));
     check_sun_and_planets(assets);
+}
+
+TEST_CASE("solar system: the Sun is bright, the planets lit and the rings see-through, the package textures",
+          "[apps]") {
+    const auto path = test::pinned_data_path(test::DataSource::packages);
+    if (!path) return test::skip("openuniverse-common is not installed (scripts/setup.sh)");
+    const SolarAssets assets = load_solar_assets(*path);
+    // The packages have no map of the Sun's surface and no star field: those two stay procedural.
+    CHECK_FALSE(assets.real_textures);
+    REQUIRE(assets.uses.size() == bodies().size() + 2);
+    for (const AssetUse& use : assets.uses) {
+        INFO(use.name);
+        const bool packaged = use.name != "textures/sun.jpg" && use.name != "textures/skybox/";
+        CHECK(use.file.has_value() == packaged);
+        if (use.file) CHECK(use.file->source == "package openuniverse-common");
+    }
+    check_sun_and_planets(assets);
+
+    // Saturn's rings: rings.jpg has no alpha, so the ring's opacity is its luminance; its inner edge is u = 0
+    // (the disk's inner radius).
+    REQUIRE(assets.ring);
+    CHECK_FALSE(assets.ring->has_alpha());
+    auto* levels = dynamic_cast<LevelOfDetail*>(assets.ring.get());
+    REQUIRE(levels);
+    levels->set_lod(0.0f);  // the full-resolution strip, not the level the frame above picked
+    auto at = [&](float u) {
+        TextureLookup l;
+        l.uv = {u, 0.5f};
+        return opacity(*assets.ring, l);
+    };
+    // The B ring (just inside the Cassini division, u about 0.5) is much more opaque than the division (0.63).
+    CHECK(at(0.5f) > 0.5f);
+    CHECK(at(0.635f) < 0.5f * at(0.5f));
 }
 
 TEST_CASE("planet maps: the longitude seam wraps and the poles clamp", "[apps]") {
     // The maps are made as rtlab-solar-system makes them (planet_map_params): u repeats, v stops at the poles.
     const TextureRegistry textures = make_texture_registry();
-    const SolarAssets assets = load_solar_assets(SearchPath{}, true);
+    const SolarAssets assets = load_solar_assets(kNoData, true);
     const auto& earth = assets.maps[3];
     TextureLookup a, b, pole, below_pole;
     a.uv = {0.0f, 0.5f};
@@ -96,8 +128,13 @@ TEST_CASE("solar system: filtered maps stop a small planet shimmering", "[apps]"
     // Earth is about 4 pixels wide at 160 x 120. Frame-to-frame change of the pixels around it, over
     // consecutive frames of a slow orbit (a 1440-frame turn): the true change (64 jittered samples per pixel,
     // unfiltered maps) against one sample per pixel with and without the filtered maps.
-    const auto path = shared_path();
-    const SolarAssets assets = path ? load_solar_assets(*path) : load_solar_assets(SearchPath{});
+    // Real maps: the procedural ones are too smooth to shimmer much. The package's (a 2048-texel Earth), else
+    // ../shared's; skipped when neither is there.
+    auto path = test::pinned_data_path(test::DataSource::packages);
+    if (!path) path = test::pinned_data_path(test::DataSource::shared);
+    if (!path) return test::skip("no planet images: neither openuniverse-common nor " + test::needs_shared("they"));
+    const SolarAssets assets = load_solar_assets(*path);
+    REQUIRE(assets.uses[3].file);  // Earth's map is an image
     const int frames = 1440, w = 160, h = 120, count = 6;
     auto measure = [&](bool filter, PixelPattern pattern, int spp) {
         double change = 0.0;
@@ -135,8 +172,10 @@ TEST_CASE("solar system: filtered maps stop a small planet shimmering", "[apps]"
     std::printf(
         "shimmer (%s): mean frame-to-frame luminance change around Earth: reference %.5f, unfiltered %.5f, "
         "filtered %.5f\n",
-        assets.real_textures ? "shared textures" : "procedural", reference, unfiltered, filtered);
-    CHECK(unfiltered > 1.5 * filtered);
+        assets.uses[3].file->source.c_str(), reference, unfiltered, filtered);
+    // The shimmer is the change beyond the true one: the filtered maps must remove most of it (shared maps:
+    // 0.00281 -> 0.00016; package maps: 0.00202 -> 0.00067), and come closer to the true change.
+    CHECK(unfiltered - reference > 2.0 * std::abs(filtered - reference));
     CHECK(std::abs(filtered - reference) < std::abs(unfiltered - reference));
 }
 
@@ -170,6 +209,6 @@ TEST_CASE("rtlab-solar-system --frames --frame-range renders just those frames, 
     const Image one = read_pfm(dir / "solar-0001.pfm");
     const Image two = read_pfm(dir / "solar-0002.pfm");
     CHECK_FALSE(test::same_pixels(one, two));  // the camera moved
-    const SolarAssets assets = load_solar_assets(SearchPath{}, true);
+    const SolarAssets assets = load_solar_assets(kNoData, true);
     CHECK(test::same_pixels(one, render_job(make_solar_job(assets, SolarView{64, 48, 1, 3, true, 4.0f})).image));
 }

@@ -4,8 +4,8 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/core/image.hpp>
 #include <rtlab/geometry/sphere.hpp>
-#include <rtlab/scene/plugin.hpp>
 #include <rtlab/render/render_job.hpp>
+#include <rtlab/scene/plugin.hpp>
 
 #include <cstdio>
 

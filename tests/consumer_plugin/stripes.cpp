@@ -27,9 +27,15 @@ std::shared_ptr<rtlab::Texture> make_stripes(const rtlab::Params& p) {
                                      rtlab::positive_float(p, "width", 0.25f));
 }
 
-void register_types(rtlab::PluginRegistries& r) {
-    r.textures.add("stripes", make_stripes, "bands of colours a and b, width high, along object-space y");
+rtlab::TypeSpec stripes_spec() {
+    rtlab::TypeSpec s("bands of colours a and b, width high, along object-space y");
+    s.add("a", rtlab::ParamKind::colour, "the even bands").defaults("[0.9, 0.1, 0.1]");
+    s.add("b", rtlab::ParamKind::colour, "the odd bands").defaults("[0.1, 0.1, 0.9]");
+    s.add("width", rtlab::ParamKind::number, "height of one band (> 0)").defaults("0.25").at_least(0);
+    return s;
 }
+
+void register_types(rtlab::PluginRegistries& r) { r.textures.add("stripes", make_stripes, stripes_spec()); }
 
 }  // namespace
 

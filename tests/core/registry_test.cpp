@@ -23,9 +23,14 @@ struct Cube final : Shape {
 
 Registry<Shape> make_registry() {
     Registry<Shape> r("shape");
+    TypeSpec ball("a ball");
+    ball.add("radius", ParamKind::number, "its radius").defaults("1");
     r.add(
-        "ball", [](const Params& p) { return std::make_shared<Ball>(p.get_float("radius", 1.0f)); }, "a ball");
-    r.add("cube", [](const Params& p) { return std::make_shared<Cube>(p.get_float("side")); });
+        "ball", [](const Params& p) { return std::make_shared<Ball>(p.get_float("radius", 1.0f)); }, ball);
+    TypeSpec cube("a cube");
+    cube.add("side", ParamKind::number, "its side").require();
+    r.add(
+        "cube", [](const Params& p) { return std::make_shared<Cube>(p.get_float("side")); }, cube);
     return r;
 }
 }  // namespace
@@ -37,6 +42,7 @@ TEST_CASE("registry creates by name with parameters and defaults", "[registry]")
     CHECK(r.create("cube", Params{}.set("side", 3.0))->size() == 3.0f);
     CHECK(r.names() == std::vector<std::string>{"ball", "cube"});
     CHECK(r.doc("ball") == "a ball");
+    CHECK(r.spec("cube").names() == std::vector<std::string>{"side"});
 }
 
 TEST_CASE("unknown names list the known ones", "[registry]") {
@@ -57,7 +63,8 @@ TEST_CASE("missing or mistyped or unused parameters are errors naming the object
 
 TEST_CASE("duplicate registration is an error", "[registry]") {
     auto r = make_registry();
-    CHECK_THROWS_WITH(r.add("ball", [](const Params&) { return std::make_shared<Ball>(1.0f); }),
+    CHECK_THROWS_WITH(r.add(
+                          "ball", [](const Params&) { return std::make_shared<Ball>(1.0f); }, TypeSpec("a ball")),
                       Contains("already registered"));
 }
 

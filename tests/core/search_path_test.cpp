@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <fstream>
+#include <scratch_files.hpp>
 
 #include "rtlab/core/error.hpp"
 
@@ -11,17 +12,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-    const fs::path d = fs::temp_directory_path() / ("rtlab_search_path_test_" + name);
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
+fs::path fresh_dir(const std::string& name) { return test::fresh_dir("rtlab_search_path_test_", name); }
 
-void touch(const fs::path& p) {
-    fs::create_directories(p.parent_path());
-    std::ofstream(p) << "x";
-}
+using test::touch;
 
 }  // namespace
 
@@ -48,7 +41,10 @@ TEST_CASE("folders and missing names are not files", "[search_path]") {
     CHECK_FALSE(path.find("sub").has_value());
     CHECK_FALSE(path.find("").has_value());
     CHECK_THROWS_WITH(path.require("sub"), Catch::Contains("'sub': file not found") && Catch::Contains("one"));
-    CHECK_THROWS_WITH(SearchPath().require("x.png", root), Catch::Contains("no data folders"));
+    // Only the folder given: it is named, and no "no folders" phrase follows it.
+    CHECK_THROWS_WITH(SearchPath().require("x.png", root),
+                      Catch::Contains("(looked in '" + root.string() + "')") && !Catch::Contains("no "));
+    CHECK_THROWS_WITH(SearchPath().require("x.png"), Catch::Contains("no folder to look in was given"));
 }
 
 TEST_CASE("the environment variable adds folders after the explicit ones", "[search_path]") {

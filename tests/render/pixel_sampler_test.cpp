@@ -56,10 +56,11 @@ TEST_CASE("pattern names and sample counts are checked", "[sampler]") {
     using Catch::Matchers::Contains;
     CHECK(parse_pixel_pattern("jittered") == PixelPattern::jittered);
     CHECK(parse_pixel_pattern("adaptive") == PixelPattern::adaptive);
-    for (auto p :
-         {PixelPattern::none, PixelPattern::grid, PixelPattern::random, PixelPattern::jittered, PixelPattern::adaptive})
+    for (auto p : {PixelPattern::none, PixelPattern::grid, PixelPattern::random, PixelPattern::jittered,
+                   PixelPattern::adaptive, PixelPattern::sobol})
         CHECK(parse_pixel_pattern(pixel_pattern_name(p)) == p);
-    CHECK_THROWS_WITH(parse_pixel_pattern("adaptiv"), Contains("none, grid, random, jittered, adaptive"));
+    CHECK_THROWS_WITH(parse_pixel_pattern("adaptiv"), Contains("none, grid, random, jittered, adaptive, sobol"));
+    CHECK(pattern_sample_count(PixelPattern::sobol, 7) == 7);
     CHECK_THROWS_AS(pattern_sample_count(PixelPattern::grid, 0), Error);
     CHECK_THROWS_AS(pattern_sample_count(PixelPattern::random, kMaxSamplesPerPixel + 1), Error);
     CHECK_THROWS_WITH(pattern_sample_count(PixelPattern::adaptive, 4), Contains("adaptive"));

@@ -127,7 +127,7 @@ TEST_CASE("a render job gives the same image and counts for 1 and 2 threads", "[
     job.camera = std::make_shared<PinholeCamera>(
         CameraSpec{.eye = {0, 3, 2}, .look_at = {0, 1.5f, -10}, .width = 48, .height = 40});
     job.lights = {point_light(Point3(-3, 8, 0), 300.0f)};
-    for (PixelPattern p : {PixelPattern::jittered, PixelPattern::adaptive}) {
+    for (PixelPattern p : {PixelPattern::jittered, PixelPattern::adaptive, PixelPattern::sobol}) {
         INFO(pixel_pattern_name(p));
         job.settings.pattern = p;
         job.settings.spp = 2;

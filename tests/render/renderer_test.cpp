@@ -1,4 +1,5 @@
 #include "image_plane.hpp"
+#include "noisy_sphere.hpp"
 
 #include <rtlab/core/error.hpp>
 #include <rtlab/render/image_output.hpp>
@@ -21,6 +22,7 @@
 #include <unistd.h>
 
 using namespace rtlab;
+using test::same_bytes;
 
 namespace {
 
@@ -29,22 +31,11 @@ namespace {
 class NoisySphere final : public RadianceSource {
 public:
     RGB radiance(const Ray& r, const SampleKey& key, RayCounters& counters) const override {
-        const Vec3 oc = r.origin - Point3(0, 0, -4);
-        const float b = glm::dot(oc, r.direction), c = glm::dot(oc, oc) - 1.0f, disc = b * b - c;
-        if (disc < 0.0f) return RGB(0.1f, 0.2f, 0.4f * std::abs(r.direction.y));
-        const Vec3 n = glm::normalize(oc + (-b - std::sqrt(disc)) * r.direction);
-        ++counters.shadow;
-        if (n.y > 0.5f) ++counters.reflected;
-        if (n.x > 0.5f) ++counters.refracted;
-        const float light = std::max(0.0f, glm::dot(n, glm::normalize(Vec3(1, 1, 1))));
-        return RGB(light * 3.0f, light * sample_uniform(key, 0), 0.5f * sample_uniform(key, 1));
+        return test::noisy_sphere(r, counters, [&](float light) {
+            return RGB(light * 3.0f, light * sample_uniform(key, 0), 0.5f * sample_uniform(key, 1));
+        });
     }
 };
-
-bool same_bytes(const Image& a, const Image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixel_count() * sizeof(RGB)) == 0;
-}
 
 }  // namespace
 

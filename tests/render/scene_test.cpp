@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <shared_data.hpp>
+#include <skip.hpp>
 #include <test_meshes.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -288,14 +289,8 @@ TEST_CASE("the bunny scene holds no more than mesh + tree + image + 20 percent a
     // the mesh's vectors (capacity x element size), the tree's own byte count (AccelStats::bytes) and the
     // image with its sample counts.
     const auto dir = shared_dir();
-    if (!dir) {
-        WARN("RTLAB_SHARED_DIR has no models/: the bunny memory test is skipped");
-        return;
-    }
-    if (!kGlibcHeap) {
-        WARN("the allocator is not glibc's (AddressSanitizer): the bunny memory test is skipped");
-        return;
-    }
+    if (!dir) return test::skip(test::needs_shared("models/stanford-bunny.obj"));
+    if (!kGlibcHeap) return test::skip("the allocator is not glibc's (AddressSanitizer): heap use cannot be measured");
     RenderJob job;
     job.lights = {point_light(Point3(0, 1, 1), 2.0f)};
     job.settings.threads = 2;

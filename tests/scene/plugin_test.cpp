@@ -4,8 +4,8 @@
 #include <rtlab/core/image.hpp>
 #include <rtlab/geometry/quad.hpp>
 #include <rtlab/geometry/sphere.hpp>
-#include <rtlab/scene/plugin.hpp>
 #include <rtlab/render/render_job.hpp>
+#include <rtlab/scene/plugin.hpp>
 #include <rtlab/scene/scene_loader.hpp>
 
 #include <catch2/catch.hpp>
@@ -146,7 +146,9 @@ TEST_CASE("the toon and wood examples load by name and register their types", "[
     CHECK(toon.description == "toon: a cel-shading material");
     CHECK(h.materials.contains("toon"));
     CHECK(h.textures.contains("wood"));
-    CHECK_THAT(h.materials.doc("toon"), Catch::Contains("levels"));
+    CHECK(h.materials.spec("toon").find("levels") != nullptr);
+    CHECK(h.materials.spec("toon").find("opacity") != nullptr);  // the shared keys, extended with
+    CHECK(h.textures.spec("wood").find("axis")->words == std::vector<std::string>{"x", "y", "z"});
     REQUIRE(h.plugins.loaded().size() == 2);
     // Loading a module again, by path or by name, is a no-op (a scene may name what --plugin loaded).
     CHECK(h.plugins.load_file(kExampleDir / "toon.so").file == toon.file);
@@ -294,7 +296,7 @@ TEST_CASE("a module with a wrong record is refused naming the field, the expecte
                                      std::to_string(host.rtlab_version_minor + 1) + "." +
                                      std::to_string(host.rtlab_version_patch);
     const std::vector<std::pair<std::string, std::vector<std::string>>> cases{
-        {"abi", {"plugin ABI version: expected 1, got 99"}},
+        {"abi", {"plugin ABI version: expected 2, got 100"}},
         {"headers",
          {"public headers hash: expected '" + std::string(host.headers_hash) + "', got '" + std::string(64, '0') +
           "'"}},

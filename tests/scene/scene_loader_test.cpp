@@ -113,17 +113,18 @@ TEST_CASE("plugins are names given to the loader before types are looked up", "[
     const std::string scene = R"({"version": 1, "plugins": ["extra"], "camera": {},
         "materials": [{"name": "m", "type": "plugin-matte"}],
         "shapes": [{"type": "sphere", "material": "m"}]})";
-    CHECK_THAT(load_error(scene), Catch::Contains("/plugins/0: the scene needs plugin 'extra', but plugin loading is "
-                                                  "not available"));
+    CHECK_THAT(load_error(scene), Catch::Contains("/plugins/0: the scene needs plugin 'extra', but this program "
+                                                  "loads no plugins"));
     SceneRegistries registries = SceneRegistries::builtins();
     std::vector<std::string> loaded;
     SceneLoadOptions o;
     o.registries = &registries;
     o.plugin_loader = [&](const std::string& name) {
         loaded.push_back(name);
-        registries.materials.add("plugin-matte", [](const Params&) -> std::shared_ptr<Material> {
-            return make_material_registry().create("lambert", {});
-        });
+        registries.materials.add(
+            "plugin-matte",
+            [](const Params&) -> std::shared_ptr<Material> { return make_material_registry().create("lambert", {}); },
+            TypeSpec("a plugin's matte material, no parameters"));
     };
     const LoadedScene s = parse_scene(scene, "t.json", o);
     CHECK(loaded == std::vector<std::string>{"extra"});

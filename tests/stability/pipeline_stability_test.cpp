@@ -7,9 +7,9 @@
 #include <rtlab/core/image.hpp>
 #include <rtlab/geometry/mesh_io.hpp>
 #include <rtlab/render/camera.hpp>
-#include <rtlab/scene/plugin.hpp>
 #include <rtlab/render/radiance_source.hpp>
 #include <rtlab/render/renderer.hpp>
+#include <rtlab/scene/plugin.hpp>
 #include <rtlab/scene/scene_loader.hpp>
 #include <rtlab/shading/optics.hpp>
 #include <rtlab/textures/image_texture.hpp>

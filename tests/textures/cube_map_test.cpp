@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "shared_data.hpp"
+#include "skip.hpp"
 
 using namespace rtlab;
 using Catch::Matchers::Contains;
@@ -215,10 +216,8 @@ TEST_CASE("cube map size errors name the face or the file", "[cubemap]") {
 
 TEST_CASE("the shared star-field skybox lines up across its face edges", "[cubemap]") {
     const auto shared = test::shared_dir();
-    if (!shared || !std::filesystem::exists(*shared / "textures" / "skybox" / "px.jpg")) {
-        WARN("skipped: ../shared/textures/skybox not found (set RTLAB_SHARED_DIR)");
-        return;
-    }
+    if (!shared || !std::filesystem::exists(*shared / "textures" / "skybox" / "px.jpg"))
+        return test::skip(test::needs_shared("textures/skybox"));
     const TextureRegistry r = make_texture_registry();
     const auto sky = r.create("cubemap", Params{}.set("folder", (*shared / "textures" / "skybox").string()));
     const auto* map = dynamic_cast<const CubeMapTexture*>(sky.get());

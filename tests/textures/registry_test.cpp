@@ -26,13 +26,17 @@ private:
 };
 
 void register_stripes(TextureRegistry& r) {
+    TypeSpec spec("stripes along u");
+    spec.add("period", ParamKind::number, "width of a pair of stripes").defaults("0.5");
+    spec.add("a", ParamKind::colour, "the first stripe").defaults("1");
+    spec.add("b", ParamKind::colour, "the second stripe").defaults("0");
     r.add(
         "stripes",
         [](const Params& p) -> std::shared_ptr<Texture> {
             return std::make_shared<StripesTexture>(p.get_float("period", 0.5f), p.get_rgb("a", RGB(1.0f)),
                                                     p.get_rgb("b", RGB(0.0f)));
         },
-        "stripes along u. period (default 0.5); a (default 1); b (default 0)");
+        spec);
 }
 
 }  // namespace
@@ -43,22 +47,28 @@ TEST_CASE("every built-in texture is registered with a documented parameter list
                                             "perlin",  "simplex",   "solid",   "stars"};
     CHECK(r.names() == expected);
     CHECK(r.category() == "texture");
-    // Each doc names the parameters with their defaults.
-    CHECK_THAT(r.doc("solid"), Contains("color") && Contains("default 1"));
-    CHECK_THAT(r.doc("checker"), Contains("tiles_u") && Contains("tiles_v") && Contains("default 8") &&
-                                     Contains("color1: even tiles, a colour or a texture (default 1)") &&
-                                     Contains("color2: odd tiles, a colour or a texture (default 0)"));
-    CHECK_THAT(r.doc("checker3d"), Contains("tiles") && Contains("color1: even cells, a colour or a texture") &&
-                                       Contains("color2: odd cells, a colour or a texture"));
-    CHECK_THAT(r.doc("mandelbrot"), Contains("iterations") && Contains("escape_radius") && Contains("center") &&
-                                        Contains("zoom") && Contains("inside") && Contains("smooth"));
-    for (const char* noise : {"perlin", "simplex"})
-        CHECK_THAT(r.doc(noise), Contains("octaves") && Contains("lacunarity") && Contains("gain") &&
-                                     Contains("turbulence") && Contains("marble") && Contains("default 6") &&
-                                     Contains("color1: a colour or a texture (default 0)"));
-    CHECK_THAT(r.doc("image"), Contains("filename") && Contains("wrap") && Contains("mirror") && Contains("scale") &&
-                                   Contains("offset"));
-    CHECK_THAT(r.doc("cubemap"), Contains("px nx py ny pz nz") && Contains("cross"));
+    // Each declaration names the parameters with their defaults.
+    auto listing = [&](const char* name) { return describe_params(r.spec(name), true); };
+    CHECK_THAT(listing("solid"), Contains("color (colour, default 1)"));
+    CHECK_THAT(listing("checker"), Contains("tiles_u (number, default 8") && Contains("tiles_v") &&
+                                       Contains("color1 (colour or texture, default 1): even tiles") &&
+                                       Contains("color2 (colour or texture, default 0): odd tiles"));
+    CHECK_THAT(listing("checker3d"), Contains("tiles") &&
+                                         Contains("color1 (colour or texture, default 1): even cells") &&
+                                         Contains("color2 (colour or texture, default 0): odd cells"));
+    CHECK_THAT(listing("mandelbrot"), Contains("iterations") && Contains("escape_radius") && Contains("center") &&
+                                          Contains("zoom") && Contains("inside") && Contains("smooth"));
+    for (const char* noise : {"perlin", "simplex"}) {
+        CHECK_THAT(listing(noise), Contains("octaves (integer, default 6") && Contains("lacunarity") &&
+                                       Contains("gain") && Contains("turbulence") && Contains("marble") &&
+                                       Contains("color1 (colour or texture, default 0)"));
+    }
+    CHECK_THAT(listing("image"), Contains("filename (file)") && Contains("wrap (repeat | clamp | mirror") &&
+                                     Contains("scale") && Contains("offset"));
+    for (const char* face : {"px", "nx", "py", "ny", "pz", "nz", "cross"})
+        CHECK(r.spec("cubemap").find(face)->kind == ParamKind::file);
+    CHECK(r.spec("cubemap").find("folder")->kind == ParamKind::folder);
+    CHECK(r.spec("cubemap").find("extension")->file_part);
 }
 
 TEST_CASE("a texture defined outside the library registers and nests like a built-in", "[registry]") {
@@ -79,8 +89,10 @@ TEST_CASE("a texture defined outside the library registers and nests like a buil
     CHECK(checker->eval(at_uv(0.3f, 0.5f)) == RGB(0.0f));              // tile (0, 0): stripes, second stripe
     CHECK(checker->eval(at_uv(1.1f, 0.5f)) == RGB(0.5f));              // tile (1, 0): colour 2
 
-    CHECK_THROWS_WITH(r.add("stripes", [](const Params&) { return std::shared_ptr<Texture>{}; }),
-                      Contains("already registered"));
+    CHECK_THROWS_WITH(
+        r.add(
+            "stripes", [](const Params&) { return std::shared_ptr<Texture>{}; }, TypeSpec("stripes again")),
+        Contains("already registered"));
 }
 
 TEST_CASE("parameter errors name the texture and the parameter", "[registry]") {

@@ -1,6 +1,7 @@
 #!/bin/sh
 # rtlab-tonemap end to end: a 2x1 PFM (grey 1 and grey 100, little-endian floats) is mapped with every
-# operator to a PNG; a missing input must fail with status 1 and name the file.
+# operator to a PNG; a missing input must fail with status 1 and name the file, a bad flag with status 2 (the
+# exit statuses of every rtlab app).
 set -eu
 app=$1
 work=$2
@@ -14,12 +15,17 @@ for op in ward reinhard exposure aces; do
   grep -q "log-average luminance" "$work/$op.txt"
 done
 grep -q "log-average luminance 10" "$work/reinhard.txt"   # exp((ln 1 + ln 100) / 2) = 10
-if "$app" "$work/missing.pfm" -o "$work/x.png" --op ward 2> "$work/err.txt"; then
-  echo "a missing input must fail"; exit 1
-fi
-grep -q "missing.pfm" "$work/err.txt"
-if "$app" "$work/in.pfm" -o "$work/x.png" --op drago 2> "$work/err2.txt"; then
-  echo "an unknown operator must fail"; exit 1
-fi
-grep -q "ward" "$work/err2.txt"
+grep -q "reinhard: key 0.18, " "$work/reinhard.txt"        # the float parameter in its shortest form
+status=0
+"$app" "$work/missing.pfm" -o "$work/x.png" --op ward 2> "$work/err.txt" || status=$?
+[ "$status" = 1 ] || { echo "a missing input must fail with status 1, not $status"; exit 1; }
+grep -q "^rtlab-tonemap: .*missing.pfm" "$work/err.txt"
+status=0
+"$app" "$work/in.pfm" -o "$work/x.png" --op drago 2> "$work/err2.txt" || status=$?
+[ "$status" = 2 ] || { echo "an unknown operator must fail with status 2, not $status"; exit 1; }
+grep -q "^rtlab-tonemap: --op: 'drago' is not one of aces, exposure, reinhard, ward$" "$work/err2.txt"
+status=0
+"$app" "$work/in.pfm" -o "$work/x.png" --kye 0.2 2> "$work/err3.txt" || status=$?
+[ "$status" = 2 ] || { echo "an unknown flag must fail with status 2, not $status"; exit 1; }
+grep -q "^rtlab-tonemap: unknown option '--kye'; did you mean '--key'?$" "$work/err3.txt"
 echo "rtlab-tonemap: all checks passed"

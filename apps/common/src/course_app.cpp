@@ -19,82 +19,29 @@ namespace rtlab::app {
 
 namespace fs = std::filesystem;
 
-void add_course_options(CLI::App& app, CourseOptions& o) {
-    app.add_option("-o,--output", o.output, "output image: .png (tone-mapped), .exr, .hdr or .pfm (linear)")
-        ->capture_default_str();
-    app.add_option("--width", o.width, "image width in pixels")->check(CLI::Range(1, 1 << 15))->capture_default_str();
-    app.add_option("--height", o.height, "image height in pixels")
-        ->check(CLI::Range(1, 1 << 15))
-        ->capture_default_str();
-    app.add_option("--aa", o.aa, "anti-aliasing: none, grid, random, jittered or adaptive (default: the scene's)")
-        ->check(CLI::IsMember({"none", "grid", "random", "jittered", "adaptive"}));
-    app.add_option("--spp", o.spp, "samples per pixel for grid, random and jittered")
-        ->check(CLI::Range(1, kMaxSamplesPerPixel));
-    app.add_option("--aa-threshold", o.threshold, "adaptive: colour difference that splits a square (default 0.3)")
-        ->check(CLI::Range(0.0f, 3.0f));
-    app.add_option("--aa-depth", o.aa_depth, "adaptive: subdivision depth (default 3)")
-        ->check(CLI::Range(0, kMaxAdaptiveDepth));
-    app.add_option("--depth", o.max_depth, "reflection and refraction depth (default: the scene's)")
-        ->check(CLI::Range(0, 64));
-    app.add_option("--threads", o.threads, "render threads (0: every core)")->check(CLI::Range(0, 1024));
-    app.add_option("--seed", o.seed, "seed of every random sample (the image is the same for the same seed)");
-    app.add_option("--tonemap", o.tonemap, "PNG tone operator: none (clamp), reinhard, ward, exposure or aces")
-        ->capture_default_str();
-    app.add_flag("-q,--quiet", o.quiet, "no progress bar and no summary");
-    app.add_option("--data-dir", o.data_dirs, "folder searched first for textures/ and models/ (repeatable)");
-}
-
-std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        app.exit(e);  // prints the message and "Run with --help for more information."
-        return 1;
-    }
-    return std::nullopt;
-}
+void add_course_options(CommandLine& cli, CourseOptions& o) { cli.add_common(o, make_tone_registry().names()); }
 
 void apply_course_options(const CourseOptions& o, RenderJob& job) {
     RenderSettings& s = job.settings;
+    // --spp never changes the pattern: it is the number of samples in the pattern --aa or the scene names.
     if (o.aa) s.pattern = parse_pixel_pattern(*o.aa);
     if (o.spp) s.spp = *o.spp;
-    // --spp alone asks for more samples: jittered ones unless a pattern is named.
-    if (o.spp && !o.aa && (s.pattern == PixelPattern::none || s.pattern == PixelPattern::adaptive) && *o.spp > 1)
-        s.pattern = PixelPattern::jittered;
-    if (o.threshold) s.adaptive.threshold = *o.threshold;
+    if (o.aa_threshold) s.adaptive.threshold = *o.aa_threshold;
     if (o.aa_depth) s.adaptive.max_depth = *o.aa_depth;
     if (o.max_depth) job.whitted.max_depth = *o.max_depth;
-    s.threads = o.threads;
-    s.seed = o.seed;
+    if (o.threads) s.threads = *o.threads;
+    if (o.seed) s.seed = *o.seed;
+    check_sampling(s, o);
 }
 
-namespace {
-
-// The checkout the executable was built in: build/<preset>/bin/ lies inside it.
-std::optional<fs::path> source_checkout(const fs::path& executable) {
-    std::error_code ec;
-    for (fs::path dir = executable.parent_path(); !dir.empty(); dir = dir.parent_path()) {
-        if (fs::is_regular_file(dir / "CMakePresets.json", ec) && fs::is_directory(dir / "libs", ec)) return dir;
-        if (dir == dir.parent_path()) break;
-    }
-    return std::nullopt;
-}
-
-}  // namespace
-
-SearchPath course_data_path(const CourseOptions& o, const fs::path& executable) {
-    SearchPath path = SearchPath::from_environment(o.data_dirs, kDataPathVariable);
-    if (const char* shared = std::getenv("RTLAB_SHARED_DIR"); shared && *shared) path.append(shared);
-    if (const auto checkout = source_checkout(executable)) {
-        std::error_code ec;
-        const fs::path shared = checkout->parent_path() / "shared";
-        if (fs::is_directory(shared, ec)) path.append(fs::weakly_canonical(shared, ec));
-    }
+DataPath app_data_path(const std::vector<fs::path>& data_dirs, const fs::path& executable, const char* program) {
+    DataPath path = DataPath::from_environment(data_dirs, executable);
+    for (const std::string& line : missing_folder_warnings(path, program)) fmt::print(stderr, "{}\n", line);
     return path;
+}
+
+DataPath course_data_path(const CourseOptions& o, const fs::path& executable, const char* program) {
+    return app_data_path(o.data_dirs, executable, program);
 }
 
 fs::path executable_path(const char* argv0) {
@@ -106,9 +53,10 @@ fs::path executable_path(const char* argv0) {
 
 CourseRenderResult run_course_render(const RenderJob& job, const CourseOptions& o, const fs::path& output,
                                      const std::string& label) {
-    // Checked before the render, so that a typo in -o does not cost the whole render.
+    // Checked before the render, so that a typo in -o or a missing folder does not cost the whole render.
     (void)output_format(output);
-    const auto tone = make_tone_operator(make_tone_registry(), o.tonemap);
+    prepare_output(output);
+    const auto tone = make_tone_operator(make_tone_registry(), o.tonemap.value_or("none"));
 
     CourseRenderResult result;
     RenderResult rendered;
@@ -125,7 +73,6 @@ CourseRenderResult run_course_render(const RenderJob& job, const CourseOptions& 
         result.interrupted = stop.interrupted();
     }
     result.stats = rendered.stats;
-    if (output.has_parent_path()) fs::create_directories(output.parent_path());
     const auto write_start = std::chrono::steady_clock::now();
     write_render_output(rendered.image, output, tone.get());
     result.write_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
@@ -145,15 +92,6 @@ CourseRenderResult run_course_render(const RenderJob& job, const CourseOptions& 
 void run_with_threads(int threads, const std::function<void()>& body) {
     if (threads <= 0) return body();
     tbb::task_arena(threads).execute(body);
-}
-
-int run_app(const char* name, const std::function<int()>& body) {
-    try {
-        return body();
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "{}: {}\n", name, e.what());
-        return 1;
-    }
 }
 
 }  // namespace rtlab::app

@@ -11,8 +11,8 @@
 //   highlight_size  cosine between the mirror direction and the viewer above which   default 0.97
 //                   the highlight shows, in [0, 1)
 //   outline         n.v below which the surface is drawn black (silhouette), [0, 1)  default 0 (none)
-//   kr              mirror reflection, colour or texture                             default 0
-//   emission        emitted colour, colour or texture                                default 0
+//   + the keys every material shares (kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption):
+//     declared with material_shared_params() and read with read_whitted(), as the built-in materials do
 //
 // Bands are flat under lights whose arriving intensity does not vary over the surface: the classic
 // convention (no fall-off) or a directional light. Physically, the band is divided by pi like Lambert.
@@ -67,9 +67,7 @@ private:
 };
 
 std::shared_ptr<Material> make_toon(const Params& p) {
-    Material::Whitted w;
-    w.kr = texture_param(p, "kr", RGB(0.0f));
-    w.emission = texture_param(p, "emission", RGB(0.0f));
+    Material::Whitted w = read_whitted(p);
     auto color = texture_param(p, "color", RGB(0.8f));
     auto highlight = texture_param(p, "highlight", RGB(0.0f));
     const int levels = bounded_int(p, "levels", 3, 1, 16);
@@ -78,13 +76,24 @@ std::shared_ptr<Material> make_toon(const Params& p) {
     return std::make_shared<ToonMaterial>(std::move(w), std::move(color), std::move(highlight), levels, size, outline);
 }
 
-void register_types(rtlab::PluginRegistries& r) {
-    r.materials.add("toon", make_toon,
-                    "cel shading: n.l cut into flat bands. color: colour or texture (default 0.8); levels 1..16 "
-                    "(default 3); highlight colour (default 0) where the mirror direction is within "
-                    "highlight_size (cosine, default 0.97) of the viewer; outline: n.v below which it is black "
-                    "(default 0); kr, emission.");
+TypeSpec toon_spec() {
+    TypeSpec s("cel shading: n.l cut into flat bands, a hard-edged highlight and a dark outline");
+    s.add("color", ParamKind::texture, "base colour").defaults("0.8");
+    s.add("levels", ParamKind::integer, "lit bands").defaults("3").range(1, 16);
+    s.add("highlight", ParamKind::texture, "added where the mirror direction is close to the viewer (0: none)")
+        .defaults("0");
+    s.add("highlight_size", ParamKind::number,
+          "cosine between the mirror direction and the viewer above which the highlight shows")
+        .defaults("0.97")
+        .range(0, 0.999999);
+    s.add("outline", ParamKind::number, "n.v below which the surface is black (0: none)")
+        .defaults("0")
+        .range(0, 0.999999);
+    s.extend(material_shared_params(), "material");
+    return s;
 }
+
+void register_types(rtlab::PluginRegistries& r) { r.materials.add("toon", make_toon, toon_spec()); }
 
 }  // namespace
 

@@ -72,12 +72,19 @@ std::shared_ptr<Texture> make_wood(const Params& p) {
     return std::make_shared<WoodTexture>(light, dark, rings, turbulence, noise_scale, axis[0] - 'x', seed);
 }
 
-void register_types(rtlab::PluginRegistries& r) {
-    r.textures.add("wood", make_wood,
-                   "solid wood: growth rings around an axis through the object's origin. light, dark: colours; "
-                   "rings per unit (default 6); turbulence in ring widths (default 0.3); noise_scale (default "
-                   "1.5); axis x|y|z (default y); seed.");
+TypeSpec wood_spec() {
+    TypeSpec s("solid wood: growth rings around an axis through the object's origin");
+    s.add("light", ParamKind::colour, "the early wood between rings").defaults("[0.78, 0.56, 0.33]");
+    s.add("dark", ParamKind::colour, "the rings").defaults("[0.42, 0.24, 0.11]");
+    s.add("rings", ParamKind::number, "rings per unit (> 0)").defaults("6").at_least(0);
+    s.add("turbulence", ParamKind::number, "noise in the ring widths").defaults("0.3").at_least(0);
+    s.add("noise_scale", ParamKind::number, "frequency of that noise (> 0)").defaults("1.5").at_least(0);
+    s.add("axis", ParamKind::word, "the trunk's axis").defaults("y").allow({"x", "y", "z"});
+    s.add("seed", ParamKind::integer, "which noise").defaults("0").range(0, 1 << 30);
+    return s;
 }
+
+void register_types(rtlab::PluginRegistries& r) { r.textures.add("wood", make_wood, wood_spec()); }
 
 }  // namespace
 

@@ -352,11 +352,12 @@ std::string_view kd_strategy_name(KdStrategy s) {
 }
 
 KdStrategy parse_kd_strategy(std::string_view name) {
-    for (KdStrategy s :
-         {KdStrategy::sah, KdStrategy::sah_binned, KdStrategy::sah_naive, KdStrategy::median, KdStrategy::midpoint})
+    std::string known;
+    for (KdStrategy s : kKdStrategies) {
         if (kd_strategy_name(s) == name) return s;
-    throw Error("unknown kd-tree strategy '" + std::string(name) +
-                "'; known: kd-sah, kd-sah-binned, kd-sah-naive, kd-median, kd-midpoint");
+        known += (known.empty() ? "" : ", ") + std::string(kd_strategy_name(s));
+    }
+    throw Error("unknown kd-tree strategy '" + std::string(name) + "'; known: " + known);
 }
 
 KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const KdCostModel& cost, int threads) {

@@ -1,5 +1,6 @@
 // kd-trees over a mesh's triangles: the shared builder with perfect splits (triangles clipped to the
 // node box), and the shared traversal with leaves tested four triangles at a time by the chosen method.
+#include <rtlab/accel/kd_build.hpp>
 #include <rtlab/accel/kd_tree.hpp>
 
 #include "kd_packets.hpp"
@@ -121,7 +122,9 @@ std::vector<int> kd_leaf_widths() {
 }
 
 std::vector<std::string> kd_tree_methods() {
-    return {"kd-sah", "kd-sah-binned", "kd-sah-naive", "kd-median", "kd-midpoint"};
+    std::vector<std::string> methods;
+    for (KdStrategy s : kKdStrategies) methods.emplace_back(kd_strategy_name(s));
+    return methods;
 }
 
 std::unique_ptr<TriangleAccelerator> make_kd_tree(std::string_view method, const TriangleMesh& mesh,

@@ -64,6 +64,12 @@ const ParamSpec* TypeSpec::find(std::string_view name) const {
     return nullptr;
 }
 
+ParamSpec& TypeSpec::at(std::string_view name) {
+    for (ParamSpec& p : m_params)
+        if (p.name == name) return p;
+    throw std::logic_error("parameter '" + std::string(name) + "' is not declared");
+}
+
 std::vector<std::string> TypeSpec::names() const {
     std::vector<std::string> out;
     out.reserve(m_params.size());
@@ -93,7 +99,12 @@ std::string describe_param(const ParamSpec& p) {
     else if (!p.default_value.empty())
         what += ", default " + p.default_value;
     const bool bounded = std::isfinite(p.lo) || std::isfinite(p.hi);
-    if (bounded) what += ", in [" + number_text(p.lo) + ", " + number_text(p.hi) + "]";
+    if (bounded && std::isinf(p.hi))
+        what += ", >= " + number_text(p.lo);
+    else if (bounded && std::isinf(p.lo))
+        what += ", <= " + number_text(p.hi);
+    else if (bounded)
+        what += ", in [" + number_text(p.lo) + ", " + number_text(p.hi) + "]";
     if (!p.unit.empty()) what += ", " + p.unit;
     return p.name + " (" + what + ")" + (p.doc.empty() ? "" : ": " + p.doc);
 }

@@ -32,7 +32,12 @@ std::vector<std::string> Params::names() const {
     return out;
 }
 
+void Params::note_lookup(std::string_view name) const {
+    if (m_looked_up.find(name) == m_looked_up.end()) m_looked_up.emplace(name);
+}
+
 const Params::Value* Params::find(std::string_view name) const {
+    note_lookup(name);
     auto it = m_values.find(name);
     if (it == m_values.end()) return nullptr;
     m_used.insert(it->first);

@@ -55,16 +55,18 @@ fs::path SearchPath::require(const fs::path& name, const fs::path& relative_to) 
     std::string tried;
     if (name.is_absolute()) {
         tried = "it does not exist or is not a file";
+    } else if (relative_to.empty() && m_folders.empty()) {
+        tried = "no folder to look in was given";
     } else {
         tried = "looked in ";
-        if (!relative_to.empty()) tried += "'" + relative_to.string() + "', ";
-        tried += describe();
+        if (!relative_to.empty()) tried += "'" + relative_to.string() + "'" + (m_folders.empty() ? "" : ", ");
+        if (!m_folders.empty()) tried += describe();
     }
     throw Error("'" + name.string() + "': file not found (" + tried + ")");
 }
 
 std::string SearchPath::describe() const {
-    if (m_folders.empty()) return "no data folders";
+    if (m_folders.empty()) return "no folders (none given)";
     std::string out;
     for (const fs::path& f : m_folders) {
         if (!out.empty()) out += ", ";

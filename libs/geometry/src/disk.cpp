@@ -54,4 +54,8 @@ bool Disk::occluded(const Ray& ray) const {
     return hit_t(ray, t);
 }
 
+std::optional<UvFootprint> Disk::uv_footprint(const Mat4& to_world) const {
+    return disk_footprint(to_world, m_centre, m_radius, m_inner_radius);
+}
+
 }  // namespace rtlab

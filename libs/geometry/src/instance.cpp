@@ -64,4 +64,10 @@ bool Instance::intersect(const Ray& ray, SurfaceHit& hit) const {
 
 bool Instance::occluded(const Ray& ray) const { return m_shape->occluded(to_object(ray)); }
 
+std::optional<UvFootprint> Instance::uv_footprint(const Mat4& to_world) const {
+    // The identity is the common case (an instance in world space): its product with m_to_world would be
+    // m_to_world, but for the sign of a zero.
+    return m_shape->uv_footprint(to_world == Mat4(1.0f) ? m_to_world : to_world * m_to_world);
+}
+
 }  // namespace rtlab

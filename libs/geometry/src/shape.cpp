@@ -16,4 +16,6 @@ void Shape::complete_hit(const Ray& ray, float t, SurfaceHit& hit) const {
     intersect(clamped, hit);
 }
 
+std::optional<UvFootprint> Shape::uv_footprint(const Mat4&) const { return std::nullopt; }
+
 }  // namespace rtlab

@@ -52,4 +52,8 @@ inline void Sphere::fill(const Ray& ray, float t, SurfaceHit& hit, bool with_uv,
     geometry::fill_hit_unit_tangent(hit, ray, t, p, error, n, uv, tangent, 0, this);
 }
 
+std::optional<UvFootprint> Sphere::uv_footprint(const Mat4& to_world) const {
+    return sphere_footprint(to_world, m_centre, m_radius);
+}
+
 }  // namespace rtlab

@@ -1,4 +1,5 @@
 #include <rtlab/core/error.hpp>
+#include <rtlab/core/sample_stream.hpp>
 #include <rtlab/render/pixel_sampler.hpp>
 
 #include <cmath>
@@ -12,8 +13,9 @@ PixelPattern parse_pixel_pattern(std::string_view name) {
     if (name == "random") return PixelPattern::random;
     if (name == "jittered") return PixelPattern::jittered;
     if (name == "adaptive") return PixelPattern::adaptive;
+    if (name == "sobol") return PixelPattern::sobol;
     throw Error("unknown anti-aliasing pattern '" + std::string(name) +
-                "'; known: none, grid, random, jittered, adaptive");
+                "'; known: none, grid, random, jittered, adaptive, sobol");
 }
 
 std::string_view pixel_pattern_name(PixelPattern pattern) {
@@ -28,6 +30,8 @@ std::string_view pixel_pattern_name(PixelPattern pattern) {
             return "jittered";
         case PixelPattern::adaptive:
             return "adaptive";
+        case PixelPattern::sobol:
+            return "sobol";
     }
     return "?";
 }
@@ -48,6 +52,7 @@ int pattern_sample_count(PixelPattern pattern, int spp) {
         case PixelPattern::none:
             return 1;
         case PixelPattern::random:
+        case PixelPattern::sobol:
             return spp;
         case PixelPattern::grid:
         case PixelPattern::jittered: {
@@ -67,6 +72,8 @@ Vec2 pattern_sample(PixelPattern pattern, int spp, int index, SampleKey pixel) {
             return Vec2(0.5f);
         case PixelPattern::random:
             return sample_uniform2(pixel, kPixelJitterDimension);
+        case PixelPattern::sobol:
+            return SampleStream(SampleSequence::sobol, pixel).get2d(kPixelPair);
         case PixelPattern::grid:
         case PixelPattern::jittered: {
             const int n = grid_side(spp);

@@ -1,31 +1,23 @@
-#include <rtlab/core/error.hpp>
-#include <rtlab/render/renderer.hpp>
+#include "tile_parallel.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-#include <tbb/task_arena.h>
+#include <rtlab/core/error.hpp>
+#include <rtlab/render/progressive.hpp>
+#include <rtlab/render/renderer.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <memory>
 #include <mutex>
-#include <optional>
 #include <string>
 
 namespace rtlab {
 
 namespace {
 
-struct Tile {
-    int x0, y0, x1, y1;
-};
-
-bool stopped(const RenderCallbacks& cb) { return cb.stop && cb.stop->load(std::memory_order_relaxed); }
+using detail::stopped;
+using detail::Tile;
 
 /// Everything a tile needs; shared read-only by the workers.
 struct TileContext {
@@ -177,26 +169,8 @@ bool render_adaptive_tile(const TileContext& c, const Tile& t, RayCounters& coun
     return true;
 }
 
-/// One arena per thread count, kept for the process. A task_arena made afresh for every render gets
-/// TBB's worker threads for its first render only: later ones ran on the calling thread alone (measured
-/// on oneTBB 2021.8, 2 cores: 1 thread busy of 2 in every render after the first).
-tbb::task_arena& arena_for(int threads) {
-    static std::mutex mutex;
-    static std::map<int, std::unique_ptr<tbb::task_arena>> arenas;
-    std::lock_guard lock(mutex);
-    std::unique_ptr<tbb::task_arena>& arena = arenas[threads];
-    if (!arena) arena = std::make_unique<tbb::task_arena>(threads);
-    return *arena;
-}
-
 void check_settings(const Camera& camera, const RenderSettings& s) {
-    if (camera.width() <= 0 || camera.height() <= 0)
-        throw Error("render: image size must be positive, got " + std::to_string(camera.width()) + "x" +
-                    std::to_string(camera.height()));
-    if (s.tile_size < 0)
-        throw Error("render: tile size must be at least 1 (or 0: from the image size), got " +
-                    std::to_string(s.tile_size));
-    if (s.threads < 0) throw Error("render: thread count must be >= 0, got " + std::to_string(s.threads));
+    detail::check_tile_settings("render", camera, s.tile_size, s.threads);
     if (s.pattern != PixelPattern::adaptive) {
         pattern_sample_count(s.pattern, s.spp);
         return;
@@ -215,6 +189,27 @@ void check_settings(const Camera& camera, const RenderSettings& s) {
                     " (width and height times 2^depth must stay below 2^24)");
 }
 
+/// The sobol pattern is progressive: its samples go through render_progressive in one pass.
+RenderResult render_sobol(const Camera& camera, const RadianceSource& radiance, const RenderSettings& settings,
+                          const RenderCallbacks& callbacks) {
+    ProgressiveSettings p;
+    p.sequence = SampleSequence::sobol;
+    p.spp = settings.spp;
+    p.seed = settings.seed;
+    p.tile_size = settings.tile_size;
+    p.threads = settings.threads;
+    ProgressiveCallbacks cb;
+    cb.progress = callbacks.progress;
+    cb.stop = callbacks.stop;
+    ProgressiveResult r = render_progressive(camera, radiance, p, cb);
+    RenderResult result;
+    result.image = std::move(r.image);
+    result.samples = r.buffer.counts();
+    result.stats = r.stats;
+    result.buffer = std::make_shared<const SampleBuffer>(std::move(r.buffer));
+    return result;
+}
+
 }  // namespace
 
 int auto_tile_size(int width, int height) {
@@ -228,11 +223,12 @@ int auto_tile_size(int width, int height) {
 RenderResult render(const Camera& camera, const RadianceSource& radiance, const RenderSettings& settings,
                     const RenderCallbacks& callbacks) {
     check_settings(camera, settings);
+    if (settings.pattern == PixelPattern::sobol) return render_sobol(camera, radiance, settings, callbacks);
     const auto start = std::chrono::steady_clock::now();
     const int w = camera.width(), h = camera.height();
     const int ts = settings.tile_size > 0 ? settings.tile_size : auto_tile_size(w, h);
-    const int tiles_x = (w + ts - 1) / ts, tiles_y = (h + ts - 1) / ts;
-    const int tiles_total = tiles_x * tiles_y;
+    const detail::TileGrid grid(w, h, ts);
+    const int tiles_total = grid.count();
 
     RenderResult result;
     result.image = Image(w, h);
@@ -249,8 +245,7 @@ RenderResult render(const Camera& camera, const RadianceSource& radiance, const 
 
     auto render_tile = [&](int index) {
         if (stopped(callbacks)) return;
-        const int tx = index % tiles_x, ty = index / tiles_x;
-        const Tile tile{tx * ts, ty * ts, std::min(w, (tx + 1) * ts), std::min(h, (ty + 1) * ts)};
+        const Tile tile = grid.tile(index);
         RayCounters counters;
         const bool complete = settings.pattern == PixelPattern::adaptive ? render_adaptive_tile(context, tile, counters)
                                                                          : render_fixed_tile(context, tile, counters);
@@ -261,26 +256,7 @@ RenderResult render(const Camera& camera, const RadianceSource& radiance, const 
         if (callbacks.progress)
             callbacks.progress(RenderProgress{tiles_done, tiles_total, totals, seconds_since_start()});
     };
-    auto run = [&] {
-        // One tile per task: tiles are costly and uneven, and the image does not depend on the split.
-        tbb::parallel_for(
-            tbb::blocked_range<int>(0, tiles_total, 1),
-            [&](const tbb::blocked_range<int>& r) {
-                for (int i = r.begin(); i != r.end(); ++i) render_tile(i);
-            },
-            tbb::simple_partitioner());
-    };
-
-    if (settings.threads > 0) {
-        // More threads than cores (a determinism test asks for 8 on 2 cores) need TBB's global limit
-        // raised as well as an arena that large; the limit is restored when the render returns.
-        std::optional<tbb::global_control> allow;
-        if (settings.threads > tbb::this_task_arena::max_concurrency())
-            allow.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(settings.threads));
-        arena_for(settings.threads).execute(run);
-    } else {
-        run();
-    }
+    detail::for_each_tile(settings.threads, tiles_total, render_tile);
 
     result.stats.rays = totals;
     result.stats.tiles_done = tiles_done;

@@ -8,26 +8,12 @@ namespace rtlab {
 
 namespace {
 
-float largest_axis_scale(const Mat4& m) {
-    return std::max({glm::length(Vec3(m[0])), glm::length(Vec3(m[1])), glm::length(Vec3(m[2]))});
-}
-
 float tan_half_fov(const CameraSpec& camera) { return std::tan(0.5f * camera.vertical_fov_degrees * kPi / 180.0f); }
 
 // n samples in a pixel average like a footprint sqrt(n) times smaller: half a level less per doubling.
 float sample_bias(float samples) { return -0.5f * std::log2(std::max(1.0f, samples)); }
 
 }  // namespace
-
-UvFootprint sphere_footprint(const Mat4& to_world, const Point3& centre, float radius) {
-    const float r = radius * largest_axis_scale(to_world);
-    return {Point3(to_world * Vec4(centre, 1.0f)), r, 2.0f * kPi * r};
-}
-
-UvFootprint disk_footprint(const Mat4& to_world, const Point3& centre, float radius, float inner_radius) {
-    const float scale = largest_axis_scale(to_world);
-    return {Point3(to_world * Vec4(centre, 1.0f)), radius * scale, (radius - inner_radius) * scale};
-}
 
 float filtering_samples(const RenderSettings& settings) {
     if (settings.pattern == PixelPattern::adaptive) return 4.0f;

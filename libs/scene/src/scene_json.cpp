@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <deque>
 #include <iterator>
 
 namespace rtlab::scene_detail {
@@ -117,8 +118,9 @@ public:
     bool binary(Json::binary_t& b) { return value(b); }
 
     bool start_object(std::size_t) {
+        if (too_deep()) return false;
         Json* node = value(Json::object_t{}) ? m_last : nullptr;
-        m_stack.push_back({node, m_child_pointer, 0});
+        m_stack.push_back({node, m_child_pointer, 0, m_child_discarded});
         return true;
     }
     bool end_object() {
@@ -127,8 +129,9 @@ public:
         return true;
     }
     bool start_array(std::size_t) {
+        if (too_deep()) return false;
         Json* node = value(Json::array_t{}) ? m_last : nullptr;
-        m_stack.push_back({node, m_child_pointer, 0});
+        m_stack.push_back({node, m_child_pointer, 0, m_child_discarded});
         return true;
     }
     bool end_array() {
@@ -138,17 +141,34 @@ public:
     }
     bool key(std::string& k) {
         const std::size_t start = token_start();
-        Frame& f = m_stack.back();
-        m_child_pointer = pointer_append(f.pointer, k);
-        if (f.node->contains(k)) {
-            const auto it = offsets.find(m_child_pointer);
-            const std::string first = it == offsets.end() ? std::string() : m_diag.location(it->second);
-            m_diag.error_at(start, (f.pointer.empty() ? std::string("(top level)") : f.pointer) + ": duplicate key '" +
-                                       k + "'" + (first.empty() ? "" : " (first at " + first + ")"));
-        } else {
-            offsets[m_child_pointer] = start;
+        if (k.size() > kMaxKeyLength) {
+            m_diag.error_at(start, "a key of " + std::to_string(k.size()) + " characters: keys are at most " +
+                                       std::to_string(kMaxKeyLength) + " characters long");
+            failed = true;
+            return false;
         }
-        m_member = &(*f.node)[k];
+        Frame& f = m_stack.back();
+        auto& members = f.node->get_ref<Json::object_t&>();
+        m_child_discarded = f.discarded;
+        if (f.discarded) {  // inside a duplicate's value: kept nowhere, and its keys are not reported again
+            members.emplace_back(k, nullptr);
+            m_member = &members.back().second;
+            m_end = *m_consumed;
+            return true;
+        }
+        m_child_pointer = pointer_append(f.pointer, k);
+        // Found through the offsets (a sorted map) rather than the object (an ordered list searched from the
+        // start), so that an object with many keys loads in n log n, not n^2.
+        if (const auto it = offsets.find(m_child_pointer); it != offsets.end()) {
+            m_diag.error_at(start, (f.pointer.empty() ? std::string("(top level)") : f.pointer) + ": duplicate key '" +
+                                       k + "' (first at " + m_diag.location(it->second) + ")");
+            m_member = &m_discarded.emplace_back();  // the file is wrong anyway; the first value stays
+            m_child_discarded = true;
+        } else {
+            offsets.emplace(m_child_pointer, start);
+            members.emplace_back(k, nullptr);
+            m_member = &members.back().second;
+        }
         m_end = *m_consumed;
         return true;
     }
@@ -167,10 +187,21 @@ public:
     }
 
 private:
+    // Deeper nesting than any scene needs is refused at once: each value's pointer grows with its depth, so
+    // a file of nested brackets would otherwise load in time quadratic in its size.
+    bool too_deep() {
+        if (m_stack.size() < kMaxNesting) return false;
+        m_diag.error_at(token_start(), "lists and objects nested more than " + std::to_string(kMaxNesting) +
+                                           " levels deep (a scene needs a handful)");
+        failed = true;
+        return true;
+    }
+
     struct Frame {
         Json* node;
         std::string pointer;
         std::size_t index;
+        bool discarded;  // the value of a duplicate key, or inside one
     };
 
     std::size_t token_start() const {
@@ -204,8 +235,11 @@ private:
         }
         Frame& f = m_stack.back();
         if (f.node->is_array()) {
-            m_child_pointer = pointer_append(f.pointer, f.index++);
-            offsets[m_child_pointer] = start;
+            m_child_discarded = f.discarded;
+            if (!f.discarded) {
+                m_child_pointer = pointer_append(f.pointer, f.index++);
+                offsets[m_child_pointer] = start;
+            }
             f.node->emplace_back(std::forward<V>(v));
             m_last = &f.node->back();
         } else {
@@ -222,6 +256,8 @@ private:
     std::string m_child_pointer;
     Json* m_member = nullptr;
     Json* m_last = nullptr;
+    std::deque<Json> m_discarded;  // values of duplicate keys (a deque: their addresses stay put)
+    bool m_child_discarded = false;
     std::size_t m_end = 0;
 };
 

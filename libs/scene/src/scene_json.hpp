@@ -50,6 +50,10 @@ private:
     std::vector<std::pair<std::size_t, std::string>> m_lines;  // offset (SIZE_MAX: none), text
 };
 
+// Limits that keep loading linear in the file's size whatever the file holds.
+inline constexpr std::size_t kMaxNesting = 64;
+inline constexpr std::size_t kMaxKeyLength = 256;
+
 // Parses a JSON document with comments. Syntax errors and duplicate keys go to `diag`; nullopt when the
 // text is not JSON at all (a syntax error).
 std::optional<Json> parse_json(std::string_view text, Diagnostics& diag);

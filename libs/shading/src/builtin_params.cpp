@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 namespace rtlab::shading_detail {
 
-namespace {
 std::string number_text(double v) {
     std::ostringstream out;
     out << v;
@@ -15,7 +15,6 @@ std::string number_text(double v) {
 }
 
 bool non_negative(const RGB& c) { return c.r >= 0.0f && c.g >= 0.0f && c.b >= 0.0f; }
-}  // namespace
 
 Vec3 finite_vec3(const Params& params, std::string_view name, const Vec3& fallback) {
     const Vec3 v = params.get_vec3(name, fallback);
@@ -66,25 +65,64 @@ MicrofacetModel read_microfacet_model(const Params& p) {
                                                                           : MicrofacetModel::beckmann;
 }
 
-const char* const kWhittedDoc =
-    " Whitted terms (all materials): kr mirror reflection, kt transmission (colours or textures); ior index "
-    "inside (default 1, glass 1.5), ior_outside (default 1); fresnel: weight kr by F and kt by 1 - F; "
-    "emission colour or texture (default 0); opacity number or texture (default 1; a texture's alpha when it "
-    "has one, else its channel mean; cut-outs, shadow rays too); absorption: Beer-Lambert coefficient per unit "
-    "distance inside (default 0). Constant kr + kt > 1 (each > 1 with fresnel) is an error; textured values "
-    "are scaled down per hit.";
+TypeSpec& with_material_params(TypeSpec& spec) { return spec.extend(material_shared_params(), "material"); }
+
+TypeSpec with_material_params(TypeSpec&& spec) {
+    spec.extend(material_shared_params(), "material");
+    return std::move(spec);
+}
+
+TypeSpec lobe_spec(std::string doc, std::string exponent_doc) {
+    TypeSpec s(std::move(doc));
+    s.add("kd", ParamKind::texture, "diffuse colour").defaults("0.8");
+    s.add("ks", ParamKind::texture, "specular colour").defaults("0.2");
+    s.add("exponent", ParamKind::scalar, std::move(exponent_doc)).defaults("25").range(0, kMaxExponent);
+    return with_material_params(std::move(s));
+}
+
+}  // namespace rtlab::shading_detail
+
+namespace rtlab {
+
+const std::vector<ParamSpec>& material_shared_params() {
+    static const std::vector<ParamSpec> shared = [] {
+        TypeSpec s("the Whitted terms");
+        s.add("kr", ParamKind::texture,
+              "mirror reflection; constant kr + kt must not exceed 1 (each 1 with fresnel), textured values are "
+              "scaled down per hit")
+            .defaults("0");
+        s.add("kt", ParamKind::texture, "transmission through the surface, refracted by ior / ior_outside")
+            .defaults("0");
+        s.add("ior", ParamKind::number, "index of refraction inside (> 0; glass 1.5)").defaults("1").at_least(0.0);
+        s.add("ior_outside", ParamKind::number, "index of refraction outside (> 0; a body in water 1.33)")
+            .defaults("1")
+            .at_least(0.0);
+        s.add("fresnel", ParamKind::boolean, "weight kr by the Fresnel reflectance F and kt by 1 - F")
+            .defaults("false");
+        s.add("emission", ParamKind::texture, "light the surface gives off itself").defaults("0");
+        s.add("opacity", ParamKind::scalar,
+              "cut-outs, shadow rays too: a texture's alpha when it has one, else its channel mean")
+            .defaults("1")
+            .range(0.0, 1.0);
+        s.add("absorption", ParamKind::colour, "Beer-Lambert coefficient of the medium inside (0: clear)")
+            .defaults("0")
+            .in("per world unit");
+        return s.params();
+    }();
+    return shared;
+}
 
 Material::Whitted read_whitted(const Params& p, const WhittedDefaults& d) {
     Material::Whitted w;
-    w.kr = colour_param(p, "kr", d.kr);
-    w.kt = colour_param(p, "kt", d.kt);
-    w.emission = colour_param(p, "emission", RGB(0.0f));
-    w.opacity = scalar_param(p, "opacity", 1.0f, 0.0f, 1.0f);
+    w.kr = shading_detail::colour_param(p, "kr", d.kr);
+    w.kt = shading_detail::colour_param(p, "kt", d.kt);
+    w.emission = shading_detail::colour_param(p, "emission", RGB(0.0f));
+    w.opacity = shading_detail::scalar_param(p, "opacity", 1.0f, 0.0f, 1.0f);
     w.ior_inside = positive_float(p, "ior", d.ior);
     w.ior_outside = positive_float(p, "ior_outside", 1.0f);
     w.fresnel = p.get_bool("fresnel", d.fresnel);
     w.absorption = finite_rgb(p, "absorption", RGB(0.0f));
-    if (!non_negative(w.absorption)) fail_param(p, "absorption", "must be >= 0");
+    if (!shading_detail::non_negative(w.absorption)) fail_param(p, "absorption", "must be >= 0");
 
     const RGB *kr = w.kr->constant(), *kt = w.kt->constant();
     auto check_range = [&](const RGB* c, const char* name) {
@@ -94,9 +132,9 @@ Material::Whitted read_whitted(const Params& p, const WhittedDefaults& d) {
     check_range(kt, "kt");
     if (kr && kt && !w.fresnel && (*kr + *kt).max_component() > 1.0f)
         fail_param(p, "kr",
-                   "plus kt exceeds 1 (" + number_text((*kr + *kt).max_component()) +
+                   "plus kt exceeds 1 (" + shading_detail::number_text((*kr + *kt).max_component()) +
                        "); lower them or set fresnel to weight them");
     return w;
 }
 
-}  // namespace rtlab::shading_detail
+}  // namespace rtlab

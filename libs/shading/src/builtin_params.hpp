@@ -12,9 +12,15 @@
 #include <rtlab/textures/texture_param.hpp>
 
 #include <memory>
+#include <string>
 #include <string_view>
 
 namespace rtlab::shading_detail {
+
+/// The shortest text of v that a message shows ("1.5").
+std::string number_text(double v);
+/// Whether every component is >= 0 (NaN is not).
+bool non_negative(const RGB& c);
 
 /// A point or vector with finite components (core's checks have no Vec3 read).
 Vec3 finite_vec3(const Params& params, std::string_view name, const Vec3& fallback);
@@ -60,16 +66,11 @@ private:
 /// mirror anyway.
 inline constexpr float kMaxExponent = 1e15f;
 
-/// What a material type uses when the Whitted parameters are absent.
-struct WhittedDefaults {
-    RGB kr{0.0f}, kt{0.0f};
-    float ior = 1.0f;
-    bool fresnel = false;
-};
-
-/// Reads kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption (every material's parameters).
-/// Constant kr + kt > 1 (without Fresnel) or kr, kt > 1 (with it) are rejected.
-Material::Whitted read_whitted(const Params& params, const WhittedDefaults& defaults);
+/// Appends the keys every material shares (material_shared_params()) to a material type's declaration.
+TypeSpec& with_material_params(TypeSpec& spec);
+TypeSpec with_material_params(TypeSpec&& spec);
+/// The declaration of a diffuse plus specular-lobe material (phong, blinn-phong): kd, ks and exponent.
+TypeSpec lobe_spec(std::string doc, std::string exponent_doc);
 
 /// The Whitted defaults of a dielectric model: ior 1.5, kr and kt 0 (its own lobes reflect and refract).
 inline WhittedDefaults glass_defaults() {
@@ -80,9 +81,6 @@ inline WhittedDefaults glass_defaults() {
 
 /// The "distribution" parameter of the microfacet models: ggx (default) or beckmann.
 MicrofacetModel read_microfacet_model(const Params& params);
-
-/// The documentation of the Whitted parameters, appended to every material's doc string.
-extern const char* const kWhittedDoc;
 
 void register_lambert(MaterialRegistry& registry);
 void register_phong(MaterialRegistry& registry);

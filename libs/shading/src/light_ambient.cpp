@@ -21,6 +21,12 @@ public:
 private:
     RGB m_intensity;
 };
+
+TypeSpec ambient_spec() {
+    TypeSpec s("ambient light, never shadowed; adds diffuse colour x intensity (classic convention)");
+    s.add("intensity", ParamKind::colour, "the ambient light").defaults("0.1");
+    return s;
+}
 }  // namespace
 
 void register_ambient(LightRegistry& registry) {
@@ -29,7 +35,7 @@ void register_ambient(LightRegistry& registry) {
         [](const Params& p) -> std::shared_ptr<Light> {
             return std::make_shared<AmbientLight>(non_negative_rgb(p, "intensity", RGB(0.1f)));
         },
-        "ambient light, never shadowed; adds diffuse colour x intensity. intensity: colour >= 0 (default 0.1)");
+        ambient_spec());
 }
 
 }  // namespace rtlab::shading_detail

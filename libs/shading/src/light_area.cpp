@@ -48,6 +48,21 @@ private:
     int m_n;
     bool m_two_sided;
 };
+
+TypeSpec area_spec() {
+    TypeSpec s(
+        "rectangular light corner + a edge_u + b edge_v, n x n stratified samples; emits towards "
+        "edge_u x edge_v");
+    s.add("corner", ParamKind::vector, "one corner").defaults("[0, 0, 0]").in("world units");
+    s.add("edge_u", ParamKind::vector, "the first edge from the corner").defaults("[1, 0, 0]").in("world units");
+    s.add("edge_v", ParamKind::vector, "the second edge, not parallel to edge_u")
+        .defaults("[0, 0, 1]")
+        .in("world units");
+    s.add("intensity", ParamKind::colour, "radiance times area").defaults("1");
+    s.add("samples", ParamKind::integer, "n: n x n shadow rays per shaded point").defaults("4").range(1, 64);
+    s.add("two_sided", ParamKind::boolean, "emits from both sides").defaults("false");
+    return s;
+}
 }  // namespace
 
 void register_area(LightRegistry& registry) {
@@ -63,9 +78,7 @@ void register_area(LightRegistry& registry) {
                                                non_negative_rgb(p, "intensity", RGB(1.0f)),
                                                bounded_int(p, "samples", 4, 1, 64), p.get_bool("two_sided", false));
         },
-        "rectangular light, n x n stratified samples. corner (default [0, 0, 0]); edge_u (default [1, 0, 0]); "
-        "edge_v (default [0, 0, 1]); emits towards edge_u x edge_v; intensity: radiance x area (default 1); "
-        "samples: n (default 4); two_sided (default false)");
+        area_spec());
 }
 
 }  // namespace rtlab::shading_detail

@@ -42,6 +42,15 @@ Vec3 unit_direction(const Params& p, std::string_view name, const Vec3& fallback
     return d / len;
 }
 
+namespace {
+TypeSpec directional_spec() {
+    TypeSpec s("parallel light, as from the sun");
+    s.add("direction", ParamKind::vector, "where the light travels (non-zero)").defaults("[0, -1, 0]");
+    s.add("intensity", ParamKind::colour, "the irradiance on a surface facing the light").defaults("1");
+    return s;
+}
+}  // namespace
+
 void register_directional(LightRegistry& registry) {
     registry.add(
         "directional",
@@ -49,8 +58,7 @@ void register_directional(LightRegistry& registry) {
             return std::make_shared<DirectionalLight>(unit_direction(p, "direction", Vec3(0.0f, -1.0f, 0.0f)),
                                                       non_negative_rgb(p, "intensity", RGB(1.0f)));
         },
-        "parallel light. direction: where the light travels (default [0, -1, 0]); intensity: colour >= 0, the "
-        "irradiance facing the light (default 1)");
+        directional_spec());
 }
 
 }  // namespace rtlab::shading_detail

@@ -36,6 +36,16 @@ LightSample point_sample(const Point3& p, const Point3& position, const RGB& int
     return s;
 }
 
+namespace {
+TypeSpec point_spec() {
+    TypeSpec s("point light");
+    s.add("position", ParamKind::vector, "where it is").defaults("[0, 0, 0]").in("world units");
+    s.add("intensity", ParamKind::colour, "divided by r^2 in the physical convention, not in the classic one")
+        .defaults("1");
+    return s;
+}
+}  // namespace
+
 void register_point(LightRegistry& registry) {
     registry.add(
         "point",
@@ -43,8 +53,7 @@ void register_point(LightRegistry& registry) {
             return std::make_shared<PointLight>(finite_vec3(p, "position", Vec3(0.0f)),
                                                 non_negative_rgb(p, "intensity", RGB(1.0f)));
         },
-        "point light. position (default [0, 0, 0]); intensity: colour >= 0 (default 1), divided by r^2 in the "
-        "physical convention, not in the classic one");
+        point_spec());
 }
 
 }  // namespace rtlab::shading_detail

@@ -45,6 +45,18 @@ private:
     RGB m_intensity;
     float m_cos_outer, m_cos_inner;
 };
+
+TypeSpec spot_spec() {
+    TypeSpec s("spot light: a point light limited to a cone, with a soft edge");
+    s.add("position", ParamKind::vector, "the cone's apex").defaults("[0, 0, 0]").in("world units");
+    s.add("direction", ParamKind::vector, "the cone's axis (non-zero)").defaults("[0, -1, 0]");
+    s.add("intensity", ParamKind::colour, "falls off as a point light's").defaults("1");
+    s.add("cone_angle", ParamKind::number, "half-angle of the cone").defaults("30").range(1e-3, 90).in("degrees");
+    s.add("falloff", ParamKind::number, "soft edge inside the cone, at most cone_angle (default: 5 or cone_angle)")
+        .range(0, 90)
+        .in("degrees");
+    return s;
+}
 }  // namespace
 
 void register_spot(LightRegistry& registry) {
@@ -58,9 +70,7 @@ void register_spot(LightRegistry& registry) {
                                                unit_direction(p, "direction", Vec3(0.0f, -1.0f, 0.0f)),
                                                non_negative_rgb(p, "intensity", RGB(1.0f)), cone * rad, falloff * rad);
         },
-        "spot light. position (default [0, 0, 0]); direction: the cone's axis (default [0, -1, 0]); intensity "
-        "(default 1, falls off as a point light's); cone_angle: half-angle in degrees (default 30); falloff: "
-        "degrees of soft edge inside the cone (default 5)");
+        spot_spec());
 }
 
 }  // namespace rtlab::shading_detail

@@ -60,6 +60,15 @@ private:
     ColourChannel m_rd, m_rs;
     ScalarChannel m_nu, m_nv;
 };
+
+TypeSpec ashikhmin_shirley_spec() {
+    TypeSpec s("anisotropic Phong of Ashikhmin and Shirley. Classic convention: times pi");
+    s.add("rd", ParamKind::texture, "diffuse colour").defaults("0.5");
+    s.add("rs", ParamKind::texture, "specular colour at normal incidence (<= 1)").defaults("0.05");
+    s.add("nu", ParamKind::scalar, "exponent along the surface tangent").defaults("100").range(0, kMaxExponent);
+    s.add("nv", ParamKind::scalar, "exponent along the bitangent (default: nu)").range(0, kMaxExponent);
+    return with_material_params(std::move(s));
+}
 }  // namespace
 
 void register_ashikhmin_shirley(MaterialRegistry& registry) {
@@ -74,11 +83,7 @@ void register_ashikhmin_shirley(MaterialRegistry& registry) {
             return std::make_shared<AshikhminShirleyMaterial>(read_whitted(p, {}), std::move(rd), std::move(rs),
                                                               std::move(nu), std::move(nv));
         },
-        std::string(
-            "anisotropic Phong of Ashikhmin and Shirley. rd (default 0.5), rs in [0, 1] (default 0.05): colours "
-            "or textures; nu along the surface tangent (default 100), nv along the bitangent (default nu): "
-            "numbers in [0, 1e15] or textures. Classic convention: times pi.") +
-            kWhittedDoc);
+        ashikhmin_shirley_spec());
 }
 
 }  // namespace rtlab::shading_detail

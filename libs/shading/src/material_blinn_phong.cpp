@@ -51,6 +51,11 @@ private:
     ColourChannel m_kd, m_ks;
     ScalarChannel m_exponent;
 };
+
+TypeSpec blinn_phong_spec() {
+    return lobe_spec("Blinn-Phong: physical kd / pi + ks c(e) (n.h)^e, normalised; classic kd (n.l) + ks (n.h)^e",
+                     "exponent e of n.h, h the half vector: larger is a smaller, sharper highlight");
+}
 }  // namespace
 
 void register_blinn_phong(MaterialRegistry& registry) {
@@ -63,10 +68,7 @@ void register_blinn_phong(MaterialRegistry& registry) {
             return std::make_shared<BlinnPhongMaterial>(read_whitted(p, {}), std::move(kd), std::move(ks),
                                                         std::move(e));
         },
-        std::string("Blinn-Phong: physical kd / pi + ks c(e) (n.h)^e, normalised; classic kd (n.l) + ks (n.h)^e. "
-                    "kd: colour or texture (default 0.8); ks (default 0.2); exponent: number or texture "
-                    "(default 25).") +
-            kWhittedDoc);
+        blinn_phong_spec());
 }
 
 }  // namespace rtlab::shading_detail

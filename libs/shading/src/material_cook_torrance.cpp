@@ -91,6 +91,23 @@ Fresnel read_fresnel(const Params& p, const Material::Whitted& w) {
     }
     return Fresnel::dielectric(w.ior_inside / w.ior_outside);  // n_surface / n_outside: 1.5 for glass in air
 }
+
+TypeSpec cook_torrance_spec() {
+    TypeSpec s(
+        "microfacet: kd / pi + ks D G F / (4 cos_o cos_i); a conductor (metal, or eta and k) or else a "
+        "dielectric lobe of index ior / ior_outside. Classic convention: times pi");
+    s.add("kd", ParamKind::texture, "diffuse colour").defaults("0");
+    s.add("ks", ParamKind::texture, "scale of the specular lobe").defaults("1");
+    s.add("roughness", ParamKind::scalar, "perceptual roughness, alpha = roughness^2").defaults("0.3").range(0, 1);
+    s.add("distribution", ParamKind::word, "the microfacet distribution D").defaults("ggx").allow({"ggx", "beckmann"});
+    s.add("metal", ParamKind::word, "a measured conductor, instead of eta and k")
+        .allow({"gold", "silver", "copper", "aluminium"});
+    s.add("eta", ParamKind::colour, "a conductor's index per channel, relative to vacuum (> 0; with k)");
+    s.add("k", ParamKind::colour, "a conductor's extinction per channel, relative to vacuum (with eta)");
+    with_material_params(s);
+    s.at("ior").defaults("1.5");
+    return s;
+}
 }  // namespace
 
 void register_cook_torrance(MaterialRegistry& registry) {
@@ -110,12 +127,7 @@ void register_cook_torrance(MaterialRegistry& registry) {
             return std::make_shared<CookTorranceMaterial>(std::move(w), std::move(kd), std::move(ks),
                                                           std::move(roughness), model, fresnel);
         },
-        std::string("microfacet: kd / pi + ks D G F / (4 cos_o cos_i). kd (default 0), ks (default 1): colours or "
-                    "textures; roughness in [0, 1], number or texture (default 0.3, alpha = roughness^2); "
-                    "distribution ggx or beckmann (default ggx); metal gold/silver/copper/aluminium, or eta and k "
-                    "colours for a conductor (relative to vacuum, divided by ior_outside), else a dielectric lobe "
-                    "of index ior (default 1.5) / ior_outside. Classic convention: times pi.") +
-            kWhittedDoc);
+        cook_torrance_spec());
 }
 
 }  // namespace rtlab::shading_detail

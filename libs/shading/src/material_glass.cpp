@@ -22,6 +22,16 @@ public:
 protected:
     void local_terms(const TextureLookup&, SurfaceTerms&) const override {}
 };
+
+TypeSpec glass_spec() {
+    TypeSpec s("smooth dielectric: kr and kt weighted by Fresnel");
+    with_material_params(s);
+    s.at("kr").defaults("1");
+    s.at("kt").defaults("1");
+    s.at("ior").defaults("1.5");
+    s.at("fresnel").defaults("true");
+    return s;
+}
 }  // namespace
 
 void register_glass(MaterialRegistry& registry) {
@@ -35,9 +45,7 @@ void register_glass(MaterialRegistry& registry) {
             d.fresnel = true;
             return std::make_shared<GlassMaterial>(read_whitted(p, d));
         },
-        std::string("smooth dielectric: kr (default 1) and kt (default 1) weighted by Fresnel (fresnel default "
-                    "true), ior default 1.5.") +
-            kWhittedDoc);
+        glass_spec());
 }
 
 }  // namespace rtlab::shading_detail

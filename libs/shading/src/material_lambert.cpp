@@ -43,6 +43,12 @@ protected:
 private:
     ColourChannel m_albedo;
 };
+
+TypeSpec lambert_spec() {
+    TypeSpec s("ideal diffuse: albedo / pi (classic: albedo, no pi)");
+    s.add("albedo", ParamKind::texture, "diffuse reflectance").defaults("0.5");
+    return with_material_params(std::move(s));
+}
 }  // namespace
 
 void register_lambert(MaterialRegistry& registry) {
@@ -52,9 +58,7 @@ void register_lambert(MaterialRegistry& registry) {
             auto albedo = colour_param(p, "albedo", RGB(0.5f));
             return std::make_shared<LambertMaterial>(read_whitted(p, {}), std::move(albedo));
         },
-        std::string("ideal diffuse: albedo / pi (classic: albedo, no pi). albedo: colour or texture (default "
-                    "0.5).") +
-            kWhittedDoc);
+        lambert_spec());
 }
 
 }  // namespace rtlab::shading_detail

@@ -18,6 +18,13 @@ public:
 protected:
     void local_terms(const TextureLookup&, SurfaceTerms&) const override {}
 };
+
+TypeSpec mirror_spec() {
+    TypeSpec s("perfect mirror: all light through kr");
+    with_material_params(s);
+    s.at("kr").defaults("1");
+    return s;
+}
 }  // namespace
 
 void register_mirror(MaterialRegistry& registry) {
@@ -28,7 +35,7 @@ void register_mirror(MaterialRegistry& registry) {
             d.kr = RGB(1.0f);
             return std::make_shared<MirrorMaterial>(read_whitted(p, d));
         },
-        std::string("perfect mirror, all light through kr (default 1).") + kWhittedDoc);
+        mirror_spec());
 }
 
 }  // namespace rtlab::shading_detail

@@ -51,6 +51,11 @@ private:
     ColourChannel m_kd, m_ks;
     ScalarChannel m_exponent;
 };
+
+TypeSpec phong_spec() {
+    return lobe_spec("Phong: physical kd / pi + ks (e + 2) / (2 pi) cos^e alpha; classic kd (n.l) + ks (r.v)^e",
+                     "Phong exponent e: larger is a smaller, sharper highlight");
+}
 }  // namespace
 
 void register_phong(MaterialRegistry& registry) {
@@ -62,10 +67,7 @@ void register_phong(MaterialRegistry& registry) {
             auto e = scalar_param(p, "exponent", 25.0f, 0.0f, kMaxExponent);
             return std::make_shared<PhongMaterial>(read_whitted(p, {}), std::move(kd), std::move(ks), std::move(e));
         },
-        std::string("Phong: physical kd / pi + ks (e + 2) / (2 pi) cos^e alpha; classic kd (n.l) + ks (r.v)^e. "
-                    "kd: colour or texture (default 0.8); ks (default 0.2); exponent: number or texture "
-                    "(default 25).") +
-            kWhittedDoc);
+        phong_spec());
 }
 
 }  // namespace rtlab::shading_detail

@@ -6,8 +6,8 @@
 //                  (scalar: channel mean)                                 default 0.2
 //   distribution   ggx or beckmann                                        default ggx
 //   ior            index of refraction inside (must differ from ior_outside)   default 1.5
-//   + the Whitted terms of every material (builtin_params.cpp: kWhittedDoc); kr and kt (default 0) are
-//   smooth delta lobes mixed in as material.hpp describes.
+//   + the keys every material shares (material_shared_params()); kr and kt (default 0) are smooth delta
+//   lobes mixed in as material.hpp describes.
 //
 // Sampled (eval/pdf/sample): the full BSDF, both sides. direct() (the Whitted integrator, which turns the
 // frame towards the viewer and cannot tell the sides apart) gives the reflection lobe as seen from outside,
@@ -61,6 +61,19 @@ private:
     ScalarChannel m_roughness;
     MicrofacetModel m_model;
 };
+TypeSpec rough_dielectric_spec() {
+    TypeSpec s(
+        "rough dielectric (frosted glass; Walter et al. 2007): microfacet reflection and refraction through an "
+        "interface of index ior / ior_outside. Whitted: the reflection lobe only; the transmission needs a "
+        "sampling integrator");
+    s.add("roughness", ParamKind::scalar, "perceptual roughness, alpha = roughness^2 (at least 1e-3)")
+        .defaults("0.2")
+        .range(0, 1);
+    s.add("distribution", ParamKind::word, "the microfacet distribution D").defaults("ggx").allow({"ggx", "beckmann"});
+    with_material_params(s);
+    s.at("ior").defaults("1.5");
+    return s;
+}
 }  // namespace
 
 void register_rough_dielectric(MaterialRegistry& registry) {
@@ -74,11 +87,7 @@ void register_rough_dielectric(MaterialRegistry& registry) {
                 fail_param(p, "ior", "equals ior_outside: an index-matched interface does not scatter");
             return std::make_shared<RoughDielectricMaterial>(std::move(w), std::move(roughness), model);
         },
-        std::string("rough dielectric (frosted glass; Walter et al. 2007): microfacet reflection and refraction. "
-                    "roughness in [0, 1], number or texture (default 0.2, alpha = roughness^2); distribution ggx "
-                    "or beckmann (default ggx); ior (default 1.5) over ior_outside. Whitted: the reflection lobe "
-                    "only; the transmission needs a sampling integrator.") +
-            kWhittedDoc);
+        rough_dielectric_spec());
 }
 
 }  // namespace rtlab::shading_detail

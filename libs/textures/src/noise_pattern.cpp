@@ -23,15 +23,26 @@ NoiseSettings read_noise_settings(const Params& p) {
     return s;
 }
 
-std::string noise_doc(const std::string& what) {
-    return what +
-           " in 2D (uv) or 3D (object-space point); t in [0, 1] blends color1 to color2. "
-           "dimension: 2 or 3 (default 3); pattern: noise | fbm | turbulence | marble (default noise), "
-           "noise and fbm give t = 0.5 + 0.5 n, turbulence t = sum |n|, marble t = 0.5 + 0.5 sin(2 pi stripes x + "
-           "distortion turbulence); scale: coordinate multiplier (default 1); octaves 1..24 (default 6); "
-           "lacunarity (default 2); gain (default 0.5); stripes >= 0 (default 1); distortion (default 4); "
-           "color1: a colour or a texture (default 0); color2: a colour or a texture (default 1); seed: permutation "
-           "seed 0..2^31-1 (default 0)";
+TypeSpec noise_spec(const std::string& what) {
+    TypeSpec s(what +
+               " in 2D (uv) or 3D (object-space point); t in [0, 1] blends color1 to color2: noise and fbm "
+               "give t = 0.5 + 0.5 n, turbulence t = sum |n|, marble t = 0.5 + 0.5 sin(2 pi stripes x + "
+               "distortion turbulence)");
+    s.add("dimension", ParamKind::integer, "2: by uv; 3: by the object-space point").defaults("3").range(2, 3);
+    s.add("pattern", ParamKind::word, "what t is made of")
+        .defaults("noise")
+        .allow({"noise", "fbm", "turbulence", "marble"});
+    s.add("scale", ParamKind::number, "coordinate multiplier (> 0)").defaults("1").at_least(0);
+    s.add("octaves", ParamKind::integer, "noise layers of fbm, turbulence and marble").defaults("6").range(1, 24);
+    s.add("lacunarity", ParamKind::number, "frequency factor from one octave to the next (> 0)")
+        .defaults("2")
+        .at_least(0);
+    s.add("gain", ParamKind::number, "amplitude factor from one octave to the next (> 0)").defaults("0.5").at_least(0);
+    s.add("stripes", ParamKind::number, "marble: stripes per unit x").defaults("1").at_least(0);
+    s.add("distortion", ParamKind::number, "marble: how far turbulence bends the stripes").defaults("4");
+    add_two_colours(s, "t = 0", "0", "t = 1", "1");
+    s.add("seed", ParamKind::integer, "permutation seed").defaults("0").range(0, 2147483647);
+    return s;
 }
 
 }  // namespace rtlab::detail

@@ -27,8 +27,8 @@ struct NoiseSettings {
 
 /// Reads the parameters listed in noise_doc() and checks them.
 NoiseSettings read_noise_settings(const Params& params);
-/// The registration doc string for a noise texture named `name`.
-std::string noise_doc(const std::string& what);
+/// The declaration of a noise texture's parameters (read_noise_settings) with `what` in its doc.
+TypeSpec noise_spec(const std::string& what);
 
 /// \brief A noise pattern: t in [0, 1] blends color1 (t = 0) to color2 (t = 1).
 template <class Noise>

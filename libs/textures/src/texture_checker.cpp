@@ -50,6 +50,16 @@ private:
 };
 }  // namespace
 
+namespace {
+TypeSpec checker_spec() {
+    TypeSpec s("2D checkerboard in uv, tile (floor(u tiles_u), floor(v tiles_v)), even tiles first");
+    s.add("tiles_u", ParamKind::number, "tiles per unit u (> 0)").defaults("8").at_least(0);
+    s.add("tiles_v", ParamKind::number, "tiles per unit v (> 0; default: tiles_u)").at_least(0);
+    add_two_colours(s, "even tiles", "1", "odd tiles", "0");
+    return s;
+}
+}  // namespace
+
 void register_checker(TextureRegistry& registry) {
     registry.add(
         "checker",
@@ -59,9 +69,7 @@ void register_checker(TextureRegistry& registry) {
             return std::make_shared<CheckerTexture>(tu, tv, texture_param(p, "color1", 1.0f),
                                                     texture_param(p, "color2", 0.0f));
         },
-        "2D checkerboard in uv, tile (floor(u tiles_u), floor(v tiles_v)), even tiles first. "
-        "tiles_u: tiles per unit u (default 8); tiles_v (default tiles_u); "
-        "color1: even tiles, a colour or a texture (default 1); color2: odd tiles, a colour or a texture (default 0)");
+        checker_spec());
 }
 
 }  // namespace rtlab::detail

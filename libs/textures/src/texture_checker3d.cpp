@@ -34,6 +34,15 @@ private:
 };
 }  // namespace
 
+namespace {
+TypeSpec checker3d_spec() {
+    TypeSpec s("solid 3D checkerboard in object space (lookup.point), cell floor(point tiles), even cells first");
+    s.add("tiles", ParamKind::numbers, "cells per unit, one number or [x, y, z], each > 0").defaults("1");
+    add_two_colours(s, "even cells", "1", "odd cells", "0");
+    return s;
+}
+}  // namespace
+
 void register_checker3d(TextureRegistry& registry) {
     registry.add(
         "checker3d",
@@ -49,10 +58,7 @@ void register_checker3d(TextureRegistry& registry) {
             return std::make_shared<Checker3dTexture>(tiles, texture_param(p, "color1", 1.0f),
                                                       texture_param(p, "color2", 0.0f));
         },
-        "solid 3D checkerboard in object space (lookup.point), cell floor(point tiles), even cells first. "
-        "tiles: cells per unit, number or [x, y, z] (default 1); color1: even cells, a colour or a texture (default "
-        "1); "
-        "color2: odd cells, a colour or a texture (default 0)");
+        checker3d_spec());
 }
 
 }  // namespace rtlab::detail

@@ -173,6 +173,27 @@ std::array<Image, 6> faces_of(const CubeMapTexture& map) {
     for (int f = 0; f < 6; ++f) faces[f] = map.face(static_cast<CubeFace>(f));
     return faces;
 }
+
+TypeSpec cubemap_spec() {
+    TypeSpec s(
+        "environment cube map by lookup.direction, OpenGL face convention, seamless bilinear filtering; "
+        "give exactly one of: the six faces, cross, folder or bake");
+    for (const char* face : kFaceNames)
+        s.add(face, ParamKind::file, std::string("the ") + face + " face (with the five others)");
+    s.add("cross", ParamKind::file, "one horizontal-cross file (4N x 3N)");
+    s.add("folder", ParamKind::folder, "a folder holding px.<extension> ... nz.<extension>");
+    s.add("extension", ParamKind::text, "the face files' extension in folder").defaults("jpg").part_of_files();
+    add_image_options(s, "the baked faces' width in texels, a whole number in 1..8192", "512");
+    return s;
+}
+
+// bake_size: one whole number, given as a number or a list of one (a "numbers" parameter).
+int bake_face_size(const Params& p) {
+    const Params::List l = p.has("bake_size") ? p.get_list("bake_size") : Params::List{512.0};
+    if (l.size() != 1 || !(l[0] >= 1.0 && l[0] <= 8192.0) || l[0] != std::floor(l[0]))
+        fail_param(p, "bake_size", "must be a whole number in 1..8192");
+    return static_cast<int>(l[0]);
+}
 }  // namespace
 
 void register_cubemap(TextureRegistry& registry) {
@@ -196,7 +217,7 @@ void register_cubemap(TextureRegistry& registry) {
             if (p.has("bake")) {
                 const auto texture = p.get_object<Texture>("bake");
                 if (!texture) fail_param(p, "bake", "must be a texture");
-                const int size = bounded_int(p, "bake_size", 512, 1, 8192);
+                const int size = bake_face_size(p);
                 std::array<Image, 6> faces = bake_cube_faces(*texture, size);
                 if (!levelled) {
                     auto map = std::make_shared<CubeMapTexture>(std::move(faces));
@@ -236,12 +257,7 @@ void register_cubemap(TextureRegistry& registry) {
             if (intensity == 1.0f) return map;
             return std::make_shared<ScaledTexture>(map, intensity);
         },
-        "environment cube map by lookup.direction, OpenGL face convention, seamless bilinear filtering. "
-        "px nx py ny pz nz: six face files, or cross: one horizontal-cross file (4N x 3N), or folder: a folder "
-        "with px.<extension> ... (extension default jpg); encoding: srgb | linear (default srgb); "
-        "intensity >= 0 (default 1); lod >= 0: box-filtered levels, looked up between the two around lod "
-        "(default: none); bake: a texture evaluated by direction into six faces of bake_size (default 512) instead "
-        "of files");
+        cubemap_spec());
 }
 
 }  // namespace detail

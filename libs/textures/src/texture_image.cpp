@@ -153,6 +153,21 @@ float ImageTexture::alpha_level(const Image& img, Vec2 uv) const {
 
 namespace detail {
 
+namespace {
+TypeSpec image_spec() {
+    TypeSpec s("image file by uv (v up: v = 0 is the bottom row), bilinear filtering");
+    s.add("filename", ParamKind::file, "the image (PNG, JPEG, ...; required unless bake)");
+    const std::vector<std::string> wraps{"repeat", "clamp", "mirror"};
+    s.add("wrap", ParamKind::word, "what lies outside [0, 1]").defaults("repeat").allow(wraps);
+    s.add("wrap_v", ParamKind::word, "v's own wrap (default: wrap)").allow(wraps);
+    s.add("filter", ParamKind::word, "between texels").defaults("bilinear").allow({"bilinear", "nearest"});
+    s.add("scale", ParamKind::numbers, "uv multiplier, [su, sv] or one number").defaults("1");
+    s.add("offset", ParamKind::numbers, "added to uv after scale, [ou, ov] or one number").defaults("0");
+    add_image_options(s, "[width, height] of the baked image, whole numbers in 1..16384", "[1024, 512]");
+    return s;
+}
+}  // namespace
+
 void register_image(TextureRegistry& registry) {
     registry.add(
         "image",
@@ -197,12 +212,7 @@ void register_image(TextureRegistry& registry) {
             texture->set_lod(lod);
             return texture;
         },
-        "image file by uv (v up: v = 0 is the bottom row), bilinear filtering. filename (required); "
-        "wrap: repeat | clamp | mirror (default repeat); filter: bilinear | nearest (default bilinear); "
-        "scale: [su, sv] or one number (default 1); offset: [ou, ov] (default 0); "
-        "encoding: srgb | linear for 8-bit files (default srgb); wrap_v: v's own wrap (default: wrap); intensity >= 0 "
-        "(default 1); lod >= 0: a pyramid of levels, looked up between the two around lod (default: none); "
-        "bake: a texture baked into a bake_size [w, h] image (default [1024, 512]) instead of filename");
+        image_spec());
 }
 
 }  // namespace detail

@@ -75,6 +75,21 @@ private:
 };
 }  // namespace
 
+namespace {
+TypeSpec mandelbrot_spec() {
+    TypeSpec s("Mandelbrot set over uv, c = center + (uv - 0.5) 3 / zoom, smooth escape-count colouring");
+    s.add("iterations", ParamKind::integer, "most iterations per point").defaults("256").range(1, 1000000);
+    s.add("escape_radius", ParamKind::number, "|z| beyond which a point has escaped").defaults("256").at_least(2);
+    s.add("center", ParamKind::numbers, "[re, im] at the middle of uv").defaults("[-0.5, 0]");
+    s.add("zoom", ParamKind::number, "magnification (> 0)").defaults("1").at_least(0);
+    s.add("inside", ParamKind::colour, "points that never escape").defaults("0");
+    s.add("outside", ParamKind::colour, "points that escape at once").defaults("[0, 0.02, 0.1]");
+    s.add("edge", ParamKind::colour, "points that escape last").defaults("[1, 0.8, 0.3]");
+    s.add("smooth", ParamKind::boolean, "a continuous escape count instead of bands").defaults("true");
+    return s;
+}
+}  // namespace
+
 void register_mandelbrot(TextureRegistry& registry) {
     registry.add(
         "mandelbrot",
@@ -91,10 +106,7 @@ void register_mandelbrot(TextureRegistry& registry) {
             s.smooth = p.get_bool("smooth", true);
             return std::make_shared<MandelbrotTexture>(s);
         },
-        "Mandelbrot set over uv, c = center + (uv - 0.5) 3 / zoom, smooth escape-count colouring. "
-        "iterations (default 256); escape_radius >= 2 (default 256); center [re, im] (default [-0.5, 0]); "
-        "zoom (default 1); inside (default 0); outside (default [0, 0.02, 0.1]); edge (default [1, 0.8, 0.3]); "
-        "smooth (default true)");
+        mandelbrot_spec());
 }
 
 }  // namespace detail

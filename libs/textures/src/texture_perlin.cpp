@@ -33,7 +33,7 @@ void register_perlin(TextureRegistry& registry) {
         [](const Params& p) -> std::shared_ptr<Texture> {
             return std::make_shared<NoisePatternTexture<PerlinNoise>>(read_noise_settings(p));
         },
-        noise_doc("improved Perlin noise (2002)"));
+        noise_spec("improved Perlin noise (2002)"));
 }
 
 }  // namespace rtlab::detail

@@ -33,7 +33,7 @@ void register_simplex(TextureRegistry& registry) {
         [](const Params& p) -> std::shared_ptr<Texture> {
             return std::make_shared<NoisePatternTexture<SimplexNoise>>(read_noise_settings(p));
         },
-        noise_doc("simplex noise (Perlin 2001)"));
+        noise_spec("simplex noise (Perlin 2001)"));
 }
 
 }  // namespace rtlab::detail

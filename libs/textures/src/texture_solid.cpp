@@ -20,11 +20,19 @@ private:
 
 std::shared_ptr<Texture> make_solid(const RGB& colour) { return std::make_shared<SolidTexture>(colour); }
 
+namespace {
+TypeSpec solid_spec() {
+    TypeSpec s("one colour everywhere");
+    s.add("color", ParamKind::colour, "the colour").defaults("1");
+    return s;
+}
+}  // namespace
+
 void register_solid(TextureRegistry& registry) {
     registry.add(
         "solid",
         [](const Params& p) -> std::shared_ptr<Texture> { return make_solid(finite_rgb(p, "color", RGB(1.0f))); },
-        "one colour everywhere. color: colour (default 1)");
+        solid_spec());
 }
 
 }  // namespace rtlab::detail

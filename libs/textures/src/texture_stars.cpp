@@ -49,6 +49,18 @@ private:
 
 namespace detail {
 
+namespace {
+TypeSpec stars_spec() {
+    TypeSpec s(
+        "random star field by lookup.direction, one value per cell of a cube-face grid; bake it into a "
+        "cubemap (\"bake\") to filter it");
+    s.add("resolution", ParamKind::integer, "cells across a cube face").defaults("512").range(1, 8192);
+    s.add("density", ParamKind::number, "chance of a star per cell").defaults("0.0025").range(0, 1);
+    s.add("seed", ParamKind::integer, "which random field").defaults("7").range(0, 1 << 30);
+    return s;
+}
+}  // namespace
+
 void register_stars(TextureRegistry& registry) {
     registry.add(
         "stars",
@@ -57,9 +69,7 @@ void register_stars(TextureRegistry& registry) {
                                                   float_in_range(p, "density", 0.0025f, 0.0f, 1.0f),
                                                   static_cast<std::uint64_t>(bounded_int(p, "seed", 7, 0, 1 << 30)));
         },
-        "random star field by lookup.direction, one value per cell of a cube-face grid: resolution cells across a "
-        "face (default 512); density: chance of a star per cell (default 0.0025); seed (default 7). Bake it into "
-        "a cubemap (\"bake\") to filter it");
+        stars_spec());
 }
 
 }  // namespace detail

@@ -23,8 +23,10 @@ public:
     }
     Image apply(const Image& hdr, ToneReport* report) const override {
         const double scale = std::exp2(m_stops);
+        // The parameter was read as a float: printed as one ("0.18", not "0.18000000715255737").
         fill_report(report, measure_luminance(hdr), scale,
-                    fmt::format("{}: {} stops, scale {:.6g}", m_filmic ? "aces" : "exposure", m_stops, scale));
+                    fmt::format("{}: {} stops, scale {:.6g}", m_filmic ? "aces" : "exposure",
+                                static_cast<float>(m_stops), scale));
         const auto s = static_cast<float>(scale);
         if (!m_filmic) return map_pixels(hdr, [s](const RGB& c) { return c * s; });
         return map_pixels(hdr, [s](const RGB& c) {
@@ -39,14 +41,22 @@ private:
     bool m_filmic;
 };
 
+namespace {
+TypeSpec stops_spec(std::string doc) {
+    TypeSpec s(std::move(doc));
+    s.add("stops", ParamKind::number, "exposure: each stop doubles the light").defaults("0").range(-64, 64).in("stops");
+    return s;
+}
+}  // namespace
+
 void register_exposure(ToneRegistry& r) {
     r.add(
         "exposure",
         [](const Params& p) { return std::make_shared<ExposureOperator>(p.get_float("stops", 0.0f), false); },
-        "linear scale by 2^stops, clamped; stops (default 0)");
+        stops_spec("linear scale by 2^stops, clamped"));
     r.add(
         "aces", [](const Params& p) { return std::make_shared<ExposureOperator>(p.get_float("stops", 0.0f), true); },
-        "Narkowicz 2015 ACES filmic fit per channel after 2^stops; stops (default 0)");
+        stops_spec("Narkowicz 2015 ACES filmic fit per channel after 2^stops"));
 }
 
 }  // namespace rtlab::tonemap

@@ -25,8 +25,9 @@ public:
         const double scale = m_key / s.log_average;
         const double white = m_white ? *m_white : scale * s.max_luminance;
         const double inv_white2 = (white > 0.0 && std::isfinite(white)) ? 1.0 / (white * white) : 0.0;
+        // The parameter was read as a float: printed as one ("0.18", not "0.18000000715255737").
         fill_report(report, s, scale,
-                    fmt::format("reinhard: key {}, L_avg {:.6g}, white {}", m_key, s.log_average,
+                    fmt::format("reinhard: key {}, L_avg {:.6g}, white {}", static_cast<float>(m_key), s.log_average,
                                 inv_white2 > 0.0 ? fmt::format("{:.6g}", white) : std::string("infinite")));
         return map_pixels(hdr, [scale, inv_white2](const RGB& c) {
             const double lw = c.luminance();
@@ -42,6 +43,17 @@ private:
     std::optional<double> m_white;  // none: the image's largest scaled luminance
 };
 
+namespace {
+TypeSpec reinhard_spec() {
+    TypeSpec s("Reinhard et al. 2002 photographic operator, global version");
+    s.add("key", ParamKind::number, "the scaled log-average luminance (> 0)").defaults("0.18").at_least(0);
+    s.add("white", ParamKind::number,
+          "the smallest scaled luminance shown as white (default: the image maximum; 0: infinite)")
+        .at_least(0);
+    return s;
+}
+}  // namespace
+
 void register_reinhard(ToneRegistry& r) {
     r.add(
         "reinhard",
@@ -49,8 +61,7 @@ void register_reinhard(ToneRegistry& r) {
             return std::make_shared<ReinhardOperator>(
                 p.get_float("key", 0.18f), p.has("white") ? std::optional<double>(p.get_float("white")) : std::nullopt);
         },
-        "Reinhard et al. 2002 photographic operator; key (default 0.18), white (default: the image maximum; 0 = "
-        "infinite)");
+        reinhard_spec());
 }
 
 }  // namespace rtlab::tonemap

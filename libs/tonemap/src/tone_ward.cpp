@@ -21,8 +21,10 @@ public:
         const double ld_a = m_ld_max / 2.0;
         const double m =
             std::pow((1.219 + std::pow(ld_a, 0.4)) / (1.219 + std::pow(s.log_average, 0.4)), 2.5) / m_ld_max;
-        fill_report(report, s, m,
-                    fmt::format("ward: ldmax {} cd/m2, L_wa {:.6g}, m {:.6g}", m_ld_max, s.log_average, m));
+        // The parameter was read as a float: printed as one ("0.18", not "0.18000000715255737").
+        fill_report(
+            report, s, m,
+            fmt::format("ward: ldmax {} cd/m2, L_wa {:.6g}, m {:.6g}", static_cast<float>(m_ld_max), s.log_average, m));
         const auto mf = static_cast<float>(m);
         return map_pixels(hdr, [mf](const RGB& c) { return c * mf; });
     }
@@ -31,10 +33,18 @@ private:
     double m_ld_max;
 };
 
+namespace {
+TypeSpec ward_spec() {
+    TypeSpec s("Ward 1994 contrast-based scale factor");
+    s.add("ldmax", ParamKind::number, "the display's maximum luminance (> 0)").defaults("100").at_least(0).in("cd/m2");
+    return s;
+}
+}  // namespace
+
 void register_ward(ToneRegistry& r) {
     r.add(
         "ward", [](const Params& p) { return std::make_shared<WardOperator>(p.get_float("ldmax", 100.0f)); },
-        "Ward 1994 contrast-based scale factor; ldmax = display maximum in cd/m2 (default 100)");
+        ward_spec());
 }
 
 }  // namespace rtlab::tonemap

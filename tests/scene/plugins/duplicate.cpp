@@ -19,14 +19,17 @@ protected:
 
 std::shared_ptr<rtlab::Material> make_black(const rtlab::Params&) { return std::make_shared<Black>(); }
 std::shared_ptr<rtlab::Texture> make_nothing(const rtlab::Params&) { return nullptr; }
+// Parameterless types: a declaration with a doc only.
+rtlab::TypeSpec no_params() { return rtlab::TypeSpec("takes no parameters"); }
+
 void register_types(rtlab::PluginRegistries& r) {
 #if defined(SELF_CLASH)
-    r.materials.add("twice", make_black);
-    r.materials.add("twice", make_black);
+    r.materials.add("twice", make_black, no_params());
+    r.materials.add("twice", make_black, no_params());
 #else
-    r.materials.add("duplicate-only", make_black);
-    r.materials.add("toon", make_black);
-    r.textures.add("checker", make_nothing);
+    r.materials.add("duplicate-only", make_black, no_params());
+    r.materials.add("toon", make_black, no_params());
+    r.textures.add("checker", make_nothing, no_params());
 #endif
 }
 

@@ -61,7 +61,9 @@ public:
     virtual AccelStats stats() const = 0;
 };
 
-/// Every method name the factory knows, in a stable order ("embree" only when built with Embree).
+/// Every method name the factory knows, in a stable order ("embree" only when built with Embree): the one list
+/// of accelerator names (the kd-tree ones come from kKdStrategies), what a scene's mesh `accel` and the apps'
+/// options allow.
 std::vector<std::string> accelerator_methods();
 
 /// Builds the named structure. Unknown names throw rtlab::Error listing the known ones.

@@ -13,6 +13,10 @@ namespace rtlab {
 /// The build strategies (see DESIGN.md for their names).
 enum class KdStrategy { sah, sah_binned, sah_naive, median, midpoint };
 
+/// Every strategy, in the order listings show them: the one list the kd-tree method names come from.
+inline constexpr KdStrategy kKdStrategies[] = {KdStrategy::sah, KdStrategy::sah_binned, KdStrategy::sah_naive,
+                                               KdStrategy::median, KdStrategy::midpoint};
+
 /// "kd-sah", "kd-sah-binned", "kd-sah-naive", "kd-median", "kd-midpoint".
 std::string_view kd_strategy_name(KdStrategy s);
 /// Throws rtlab::Error listing the known names for an unknown one.

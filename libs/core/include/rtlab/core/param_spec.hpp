@@ -34,31 +34,52 @@ const char* param_kind_name(ParamKind kind);
 struct ParamSpec {
     std::string name;
     ParamKind kind = ParamKind::number;
-    std::string doc;                  ///< one line
+    std::string doc;  ///< one line
     bool required = false;
-    std::string default_value;        ///< as a file would write it ("0.8", "[0, 1, 0]", "repeat"); "" when none
+    std::string default_value;  ///< as a file would write it ("0.8", "[0, 1, 0]", "repeat"); "" when none
     double lo = -std::numeric_limits<double>::infinity();  ///< range of a number, integer or scalar
     double hi = std::numeric_limits<double>::infinity();
-    std::vector<std::string> words;   ///< the allowed words of a word parameter
-    std::string unit;                 ///< "degrees", "world units"...; "" when none
-    std::string group;                ///< "" for the type's own; else a group of keys many types share
-    bool file_part = false;           ///< names (part of) the files a texture reads: a fallback replaces them
+    std::vector<std::string> words;  ///< the allowed words of a word parameter
+    std::string unit;                ///< "degrees", "world units"...; "" when none
+    std::string group;               ///< "" for the type's own; else a group of keys many types share
+    bool file_part = false;          ///< names (part of) the files a texture reads: a fallback replaces them
 
-    ParamSpec& require() { required = true; return *this; }
-    ParamSpec& defaults(std::string text) { default_value = std::move(text); return *this; }
-    ParamSpec& range(double low, double high) { lo = low; hi = high; return *this; }
-    ParamSpec& allow(std::vector<std::string> allowed) { words = std::move(allowed); return *this; }
-    ParamSpec& in(std::string u) { unit = std::move(u); return *this; }
-    ParamSpec& part_of_files() { file_part = true; return *this; }
+    ParamSpec& require() {
+        required = true;
+        return *this;
+    }
+    ParamSpec& defaults(std::string text) {
+        default_value = std::move(text);
+        return *this;
+    }
+    ParamSpec& range(double low, double high) {
+        lo = low;
+        hi = high;
+        return *this;
+    }
+    ParamSpec& at_least(double low) {
+        lo = low;
+        return *this;
+    }
+    ParamSpec& allow(std::vector<std::string> allowed) {
+        words = std::move(allowed);
+        return *this;
+    }
+    ParamSpec& in(std::string u) {
+        unit = std::move(u);
+        return *this;
+    }
+    ParamSpec& part_of_files() {
+        file_part = true;
+        return *this;
+    }
 };
 
 /// \brief A type's documentation and its parameters, in the order a listing shows them.
 class TypeSpec {
 public:
-    TypeSpec() = default;
-    // TRANSITION (implicit until every registration declares its parameters): a doc string only.
-    TypeSpec(std::string doc) : m_doc(std::move(doc)) {}  // NOLINT
-    TypeSpec(const char* doc) : m_doc(doc) {}             // NOLINT
+    /// Every type is registered with one (Registry::add takes no default), so none goes without a doc.
+    explicit TypeSpec(std::string doc) : m_doc(std::move(doc)) {}
 
     /// Declares a parameter; a name declared twice is a programming error (std::logic_error).
     ParamSpec& add(std::string name, ParamKind kind, std::string doc);
@@ -69,6 +90,9 @@ public:
     const std::vector<ParamSpec>& params() const { return m_params; }
     /// The declaration of `name`, or nullptr.
     const ParamSpec* find(std::string_view name) const;
+    /// The declaration of `name` to change (a shared key's default for one type: glass's kr is 1); an
+    /// undeclared name is a programming error (std::logic_error).
+    ParamSpec& at(std::string_view name);
     std::vector<std::string> names() const;
 
 private:

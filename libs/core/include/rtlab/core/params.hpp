@@ -35,7 +35,10 @@ public:
         return set(std::move(name), Value{std::in_place_index<4>, std::any(std::move(object))});
     }
 
-    bool has(std::string_view name) const { return m_values.find(name) != m_values.end(); }
+    bool has(std::string_view name) const {
+        note_lookup(name);
+        return m_values.find(name) != m_values.end();
+    }
     std::vector<std::string> names() const;
 
     float get_float(std::string_view name) const;
@@ -67,6 +70,10 @@ public:
         return *object;
     }
 
+    /// Every name a getter or has() looked up so far, given or not: what a factory reads, for a test that
+    /// compares it with the type's declaration.
+    std::vector<std::string> looked_up() const { return {m_looked_up.begin(), m_looked_up.end()}; }
+
     /// Who these parameters are for ("texture 'checker'"); used in every error message.
     void set_context(std::string context) { m_context = std::move(context); }
     const std::string& context() const { return m_context; }
@@ -83,11 +90,13 @@ public:
 
 private:
     const Value* find(std::string_view name) const;
+    void note_lookup(std::string_view name) const;
     const Value& require(std::string_view name) const;
     [[noreturn]] void fail_type(std::string_view name, std::string_view expected) const;
 
     std::map<std::string, Value, std::less<>> m_values;
     mutable std::set<std::string, std::less<>> m_used;
+    mutable std::set<std::string, std::less<>> m_looked_up;
     std::string m_context = "object";
     std::function<void(const std::string&)> m_warn;
 };

@@ -34,8 +34,9 @@ public:
     const std::string& category() const { return m_category; }
 
     /// Adds a factory with the declaration of its parameters (what a scene loader checks a file's values
-    /// against); a name registered twice is an error (two plugins fighting over one name).
-    void add(std::string name, Factory factory, TypeSpec spec = {}) {
+    /// against; required, so that no type goes undeclared); a name registered twice is an error (two plugins fighting
+    /// over one name).
+    void add(std::string name, Factory factory, TypeSpec spec) {
         if (m_entries.contains(name)) detail::throw_duplicate_name(m_category, name);
         m_entries.emplace(std::move(name), Entry{std::move(factory), std::move(spec)});
     }

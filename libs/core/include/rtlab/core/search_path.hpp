@@ -37,7 +37,7 @@ public:
 
     [[nodiscard]] const std::vector<std::filesystem::path>& folders() const { return m_folders; }
 
-    /// "'a', 'b'" or "no folders": for messages that say where a file was looked for.
+    /// "'a', 'b'" or "no folders (none given)": for messages that say where a file was looked for.
     [[nodiscard]] std::string describe() const;
 
 private:

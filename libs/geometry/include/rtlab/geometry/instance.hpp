@@ -17,6 +17,8 @@ public:
     AABB bounds() const override;
     bool intersect(const Ray& ray, SurfaceHit& hit) const override;
     bool occluded(const Ray& ray) const override;
+    using Shape::uv_footprint;
+    std::optional<UvFootprint> uv_footprint(const Mat4& to_world) const override;
 
 private:
     Ray to_object(const Ray& ray) const;

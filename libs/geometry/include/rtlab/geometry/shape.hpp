@@ -3,6 +3,9 @@
 #include <rtlab/core/aabb.hpp>
 #include <rtlab/core/ray.hpp>
 #include <rtlab/geometry/surface_hit.hpp>
+#include <rtlab/geometry/uv_footprint.hpp>
+
+#include <optional>
 
 namespace rtlab {
 
@@ -33,6 +36,15 @@ public:
     /// whose uv is costly may leave it at its default; every other field is complete_hit()'s, bit for bit.
     /// The default is complete_hit().
     virtual void complete_hit_without_uv(const Ray& ray, float t, SurfaceHit& hit) const { complete_hit(ray, t, hit); }
+
+    /// Where the shape's uv lies in world space, for the level of detail of a filtered texture on it (one map
+    /// period of u along its equator or across its ring); nullopt for a shape without one such footprint
+    /// (quads, boxes, meshes...).
+    std::optional<UvFootprint> uv_footprint() const { return uv_footprint(Mat4(1.0f)); }
+    /// The footprint of the shape placed by `to_world`. An Instance passes its matrix on (composed with
+    /// `to_world`) instead of transforming its child's footprint, so that a transformed sphere's footprint is
+    /// worked out from the one matrix, bit for bit as sphere_footprint() gives it. nullopt by default.
+    virtual std::optional<UvFootprint> uv_footprint(const Mat4& to_world) const;
 };
 
 }  // namespace rtlab

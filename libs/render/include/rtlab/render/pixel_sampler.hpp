@@ -12,10 +12,13 @@ namespace rtlab {
 
 /// none: the pixel centre once; grid: a regular sqrt(spp) x sqrt(spp) grid; random: uniform;
 /// jittered: one uniform sample in each cell of the grid (stratified); adaptive: Whitted's corner
-/// subdivision on a dyadic lattice (see AdaptiveSettings), which is no fixed pattern.
-enum class PixelPattern { none, grid, random, jittered, adaptive };
+/// subdivision on a dyadic lattice (see AdaptiveSettings), which is no fixed pattern; sobol: Owen-scrambled Sobol
+/// points (rtlab/core/low_discrepancy.hpp), progressive: spp samples exactly, any prefix well stratified, rendered
+/// by render_progressive() (rtlab/render/progressive.hpp), whose integrators may draw their own dimensions from the
+/// same sequence.
+enum class PixelPattern { none, grid, random, jittered, adaptive, sobol };
 
-/// "none", "grid", "random", "jittered" or "adaptive"; throws rtlab::Error listing them otherwise.
+/// "none", "grid", "random", "jittered", "adaptive" or "sobol"; throws rtlab::Error listing them otherwise.
 PixelPattern parse_pixel_pattern(std::string_view name);
 std::string_view pixel_pattern_name(PixelPattern pattern);
 
@@ -27,7 +30,7 @@ inline constexpr std::uint32_t kLensDimension = 0x80000002u;
 /// Largest samples-per-pixel count the fixed patterns accept.
 inline constexpr int kMaxSamplesPerPixel = 1 << 16;
 
-/// How many samples a fixed pattern takes for spp: 1 for none, spp for random, and spp rounded up to the
+/// How many samples a fixed pattern takes for spp: 1 for none, spp for random and sobol, and spp rounded up to the
 /// next square for grid and jittered. Throws rtlab::Error for spp outside [1, kMaxSamplesPerPixel] or
 /// the adaptive pattern.
 int pattern_sample_count(PixelPattern pattern, int spp);

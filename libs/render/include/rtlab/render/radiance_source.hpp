@@ -3,10 +3,12 @@
 #include <rtlab/core/color.hpp>
 #include <rtlab/core/ray.hpp>
 #include <rtlab/core/sample_hash.hpp>
+#include <rtlab/core/sample_stream.hpp>
 #include <rtlab/shading/whitted.hpp>
 
 #include <cstdint>
 #include <functional>
+#include <span>
 
 namespace rtlab {
 
@@ -27,6 +29,15 @@ struct RayCounters : RayStats {
     }
 };
 
+/// \brief A camera sample as the progressive renderer hands it over: the camera ray and the sample's numbers.
+/// stream.key() names it (seed, pixel x and y, sample index, bounce 0); the renderer has used the stream's pairs
+/// kPixelPair and kLensPair for the ray; the integrator draws its own from kFirstIntegratorPair up
+/// (rtlab/core/sample_stream.hpp documents the numbering).
+struct CameraSample {
+    Ray ray;
+    SampleStream stream;
+};
+
 /// \brief The radiance computation the renderer calls for every camera ray (a Whitted integrator, or an
 /// analytic function in tests and benchmarks). Called concurrently from several threads: it must be
 /// thread-safe and, for images that do not depend on the thread count, a pure function of its arguments.
@@ -35,9 +46,26 @@ public:
     virtual ~RadianceSource() = default;
     /// Radiance arriving at the camera along `ray`. `key` names the camera sample (seed, lattice
     /// position, sample index, bounce 0); random numbers come from sample_uniform(key, dimension) with
-    /// dimensions below kPixelJitterDimension. The renderer counts the camera ray itself; the source adds
+    /// dimensions below kStreamDimensionBase. The renderer counts the camera ray itself; the source adds
     /// the shadow, reflected and refracted rays it traces to `counters`.
     virtual RGB radiance(const Ray& ray, const SampleKey& key, RayCounters& counters) const = 0;
+
+    /// Radiance for a camera sample of the progressive renderer. An integrator that draws its numbers from the
+    /// sample's stream (low-discrepancy with PixelPattern::sobol) overrides this; the default ignores the stream and
+    /// calls radiance(ray, key), whose hashed numbers are independent of the stream's.
+    virtual RGB sample_radiance(const CameraSample& sample, RayCounters& counters) const {
+        return radiance(sample.ray, sample.stream.key(), counters);
+    }
+
+    /// The entry point for groups of coherent rays: out[i] = the radiance of samples[i], for a group the
+    /// progressive renderer forms from one sample index over neighbouring pixels of a tile (up to two pixel rows,
+    /// row-major, so 4x2 and 8x2 blocks are contiguous in pairs of row runs). `out` has samples.size() elements.
+    /// The default calls sample_radiance() in order; a packet tracer overrides it. Results must equal what
+    /// sample_radiance() gives for each sample alone, so images do not depend on how samples are grouped.
+    virtual void radiance_batch(std::span<const CameraSample> samples, std::span<RGB> out,
+                                RayCounters& counters) const {
+        for (std::size_t i = 0; i < samples.size(); ++i) out[i] = sample_radiance(samples[i], counters);
+    }
 };
 
 /// \brief A RadianceSource made of a callable.

@@ -4,10 +4,12 @@
 #include <rtlab/render/camera.hpp>
 #include <rtlab/render/pixel_sampler.hpp>
 #include <rtlab/render/radiance_source.hpp>
+#include <rtlab/render/sample_buffer.hpp>
 
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace rtlab {
@@ -15,7 +17,7 @@ namespace rtlab {
 /// \brief How to render. The image does not depend on `threads` or on the tile size.
 struct RenderSettings {
     PixelPattern pattern = PixelPattern::none;
-    int spp = 1;                ///< samples per pixel for grid, random and jittered
+    int spp = 1;                ///< samples per pixel for grid, random, jittered and sobol
     AdaptiveSettings adaptive;  ///< for PixelPattern::adaptive
     std::uint64_t seed = 0;     ///< SampleKey::seed of every sample
     /// Tiles are tile_size x tile_size pixels (smaller at the right and bottom); 0 picks it from the image size
@@ -61,9 +63,13 @@ struct RenderResult {
     Image image;                         ///< linear radiance; pixels never reached are black
     std::vector<std::uint32_t> samples;  ///< camera rays each pixel traced, row-major; 0: not rendered
     RenderStats stats;
+    /// The per-pixel sums of a progressive pattern (sobol): variance and half-images; null for the others.
+    std::shared_ptr<const SampleBuffer> buffer;
 };
 
-/// Renders camera.width() x camera.height() pixels in parallel tiles. Throws rtlab::Error for bad
+/// Renders camera.width() x camera.height() pixels in parallel tiles; the sobol pattern goes to
+/// render_progressive() in one pass (its radiance source sees SampleStreams through sample_radiance or
+/// radiance_batch). Throws rtlab::Error for bad
 /// settings (spp, tile size, thread count, adaptive depth or threshold); exceptions thrown by the
 /// radiance source reach the caller. With the adaptive pattern a corner shared by neighbouring pixels is
 /// traced once per tile and counted by the pixel that needed it first.

@@ -3,27 +3,14 @@
 /// and the objects that use it. The renderer traces rays without differentials, so a texture has one level
 /// per picture: the one at which a texel of the map covers about one pixel where the object's centre is
 /// seen. This is what rtlab-solar-system uses for its planets and what "lod": "auto" means in a scene file,
-/// so that the two pick the same levels.
+/// so that the two pick the same levels. What
+/// a shape's footprint is (UvFootprint) is the geometry library's: each shape gives its own.
 #include <rtlab/core/math.hpp>
+#include <rtlab/geometry/uv_footprint.hpp>
 #include <rtlab/render/camera.hpp>
 #include <rtlab/render/renderer.hpp>
 
 namespace rtlab {
-
-/// \brief What the level is worked out from: a bounding sphere (centre, radius) in world space, and the
-/// world length one whole period of u covers on the surface (the texels of the map's width lie along it).
-struct UvFootprint {
-    Point3 centre{0.0f};
-    float radius = 0.0f;
-    float u_length = 0.0f;
-};
-
-/// A sphere (rtlab::Sphere: u is the longitude) placed by `to_world`: u runs round its equator.
-/// The radius is scaled by the largest axis scale of `to_world`.
-UvFootprint sphere_footprint(const Mat4& to_world, const Point3& centre, float radius);
-
-/// A disk or annulus (rtlab::Disk: u runs from the inner to the outer edge) placed by `to_world`.
-UvFootprint disk_footprint(const Mat4& to_world, const Point3& centre, float radius, float inner_radius);
 
 /// The samples per pixel that average texels together: pattern_sample_count for the fixed patterns, 4 for
 /// adaptive (its first corners; it refines only at edges).

@@ -1,5 +1,6 @@
 #pragma once
 /// \brief JSON scene files: one document in, a RenderJob and its output settings out.
+#include <rtlab/core/data_path.hpp>
 #include <rtlab/geometry/transform.hpp>
 #include <rtlab/render/image_limits.hpp>
 #include <rtlab/render/render_job.hpp>
@@ -29,13 +30,16 @@ struct SceneOverrides {
     std::optional<int> threads;
     std::optional<std::string> tonemap;  ///< a tone operator name or "none"
     std::optional<std::uint64_t> seed;
+    std::optional<int> max_depth;  ///< the integrator's recursion depth
 };
 
 /// \brief How to load a scene.
 struct SceneLoadOptions {
-    /// Folders searched for the files a scene names, after the scene's own folder (--data-dir).
+    /// Where the files a scene names are found after the scene's own folder (rtlab/core/data_path.hpp: a
+    /// program passes its --data-dir, environment and checkout through DataPath::from_environment). When
+    /// absent: `data_dirs`, then (use_environment) RTLAB_DATA_PATH, RTLAB_SHARED_DIR and the data packages.
+    std::optional<DataPath> data_path;
     std::vector<std::filesystem::path> data_dirs;
-    /// Also search the folders of the RTLAB_DATA_PATH environment variable, after data_dirs.
     bool use_environment = true;
     /// Called with each name of the scene's "plugins" list before any type is looked up; it loads the
     /// module so that its types are in `registries`. Absent: a scene naming plugins is an error.
@@ -54,13 +58,14 @@ struct LoadedScene {
     std::shared_ptr<const ToneOperator> tone;  ///< nullptr for "none" (clamp)
     std::vector<std::string> plugins;          ///< the names the file asked for, in order
     std::vector<std::string> warnings;         ///< non-fatal problems (a mesh's missing .mtl, say)
+    std::vector<AssetUse> assets;              ///< the files the scene named, where each was found (describe_sources)
 };
 
 /// Loads a scene file. All problems of the file are collected and thrown together as one rtlab::Error,
 /// one per line: "FILE:LINE:COLUMN: /json/pointer: what was wrong and what was expected" (syntax errors
 /// give the position of the error). Unknown keys, duplicate keys, unknown types and names that refer to
-/// nothing are errors. Files the scene names are found relative to its folder, then in
-/// options.data_dirs, then on RTLAB_DATA_PATH.
+/// nothing are errors. Files the scene names are found relative to its folder (a bare "scene.json" is in the
+/// current folder), then on the data path (SceneLoadOptions::data_path).
 LoadedScene load_scene(const std::filesystem::path& file, const SceneLoadOptions& options = {});
 
 /// The same for a document already in memory; `file` names it in messages and its folder is where relative

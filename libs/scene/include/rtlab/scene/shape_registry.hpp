@@ -8,8 +8,8 @@ namespace rtlab {
 using ShapeRegistry = Registry<Shape>;
 
 /// Registers sphere, disk (with an optional inner radius), quad, box, cylinder, triangle, mesh (a PLY or OBJ
-/// file with its own kd-tree) and instance (a named shape under a 4x4 matrix). Each doc() lists the
-/// parameters. File names ("filename") must already be resolved: the factories open them as given.
+/// file with its own kd-tree) and instance (a named shape under a 4x4 matrix), each with the declaration of its
+/// parameters (spec()). File names ("filename") must already be resolved: the factories open them as given.
 void register_builtins(ShapeRegistry& registry);
 
 /// A registry with category "shape" and every built-in registered.

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace rtlab {
 
@@ -171,5 +172,22 @@ void register_builtins(MaterialRegistry& registry);
 
 /// A registry with category "material" and every built-in registered.
 MaterialRegistry make_material_registry();
+
+/// The keys every material shares (kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption), declared
+/// once: a material type, a plugin's too, declares them with `spec.extend(material_shared_params(), "material")`
+/// and reads them with read_whitted(), so that a listing shows them once and every material takes them.
+const std::vector<ParamSpec>& material_shared_params();
+
+/// What a material type uses when a shared key is absent (glass: kr = kt = 1, ior 1.5, fresnel); a type whose
+/// defaults differ says so in its declaration too (`spec.at("kr").defaults("1")`).
+struct WhittedDefaults {
+    RGB kr{0.0f}, kt{0.0f};
+    float ior = 1.0f;
+    bool fresnel = false;
+};
+
+/// Reads the shared keys of material_shared_params() into the Whitted terms, checked: colours >= 0, opacity in
+/// [0, 1], indices > 0, constant kr + kt <= 1 without fresnel (each <= 1 with it). Throws rtlab::ParamError.
+Material::Whitted read_whitted(const Params& params, const WhittedDefaults& defaults = {});
 
 }  // namespace rtlab

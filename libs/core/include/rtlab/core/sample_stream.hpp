@@ -1,0 +1,65 @@
+#pragma once
+/// \brief The random numbers of one camera sample, from a sequence chosen by the renderer, so an integrator draws
+/// its dimensions without knowing whether they are independent or low-discrepancy.
+///
+/// Dimension numbering. Numbers come in 2-D pairs; pair p holds dimensions 2p and 2p + 1 (get1d(2p) is
+/// get2d(p).x). The renderer owns pairs 0 (kPixelPair: the offset in the pixel) and 1 (kLensPair: the point on the
+/// lens); an integrator numbers its own from kFirstIntegratorPair up, the same pair for the same decision in every
+/// sample (a path tracer: pair kFirstIntegratorPair + bounce * pairs_per_bounce + j for its j-th 2-D decision at
+/// that bounce, e.g. light choice and light position, BSDF lobe and direction, Russian roulette), because the
+/// low-discrepancy sequence stratifies each pair over the samples of a pixel: a pair's points are well spread only
+/// if it always serves the same purpose. Two uses of one pair in one sample are correlated; use two pairs.
+#include <rtlab/core/low_discrepancy.hpp>
+#include <rtlab/core/math.hpp>
+#include <rtlab/core/sample_hash.hpp>
+
+#include <cstdint>
+
+namespace rtlab {
+
+/// independent: every number an unrelated hash of the key (sample_hash); sobol: each pair an Owen-scrambled Sobol
+/// (0,2)-sequence over the sample index, its own randomisation per pixel and pair.
+enum class SampleSequence { independent, sobol };
+
+inline constexpr std::uint32_t kPixelPair = 0;
+inline constexpr std::uint32_t kLensPair = 1;
+inline constexpr std::uint32_t kFirstIntegratorPair = 2;
+
+/// sample_hash dimensions of the streams start here, apart from the small numbers integrators pass to
+/// sample_hash directly with the same key and from the renderer's kPixelJitterDimension (0x80000000).
+inline constexpr std::uint32_t kStreamDimensionBase = 0x40000000u;
+
+/// \brief The numbers of sample `key.sample` of pixel (key.x, key.y): a pure function of the sequence, the key
+/// and the dimension, so any sample can be drawn alone, in any order, on any thread. Cheap to copy.
+class SampleStream {
+public:
+    SampleStream(SampleSequence sequence, const SampleKey& key) : m_key(key), m_sequence(sequence) {
+        if (sequence == SampleSequence::sobol) {
+            // The pixel's randomisation leaves out the sample index: the index walks along the sequence.
+            SampleKey pixel = key;
+            pixel.sample = 0;
+            m_pixel_seed = sample_hash(pixel, kStreamDimensionBase);
+        }
+    }
+
+    /// Pair `pair` (dimensions 2 pair and 2 pair + 1), in [0, 1)^2.
+    Vec2 get2d(std::uint32_t pair) const {
+        if (m_sequence == SampleSequence::sobol) return sobol_owen_pair(mix_seed(m_pixel_seed + pair), m_key.sample);
+        return sample_uniform2(m_key, kStreamDimensionBase + 2u * pair);
+    }
+    /// Dimension `dimension`, in [0, 1).
+    float get1d(std::uint32_t dimension) const {
+        const Vec2 p = get2d(dimension / 2u);
+        return (dimension & 1u) ? p.y : p.x;
+    }
+
+    const SampleKey& key() const { return m_key; }
+    SampleSequence sequence() const { return m_sequence; }
+
+private:
+    SampleKey m_key;
+    SampleSequence m_sequence;
+    std::uint64_t m_pixel_seed = 0;
+};
+
+}  // namespace rtlab
