@@ -203,9 +203,10 @@ TEST_CASE("apps: Ctrl-C stops every app with status 130 and writes the partial i
         args.insert(args.end(), slow.begin(), slow.end());
         args.push_back(out.string());
         // The handler is set when the render starts: a signal before that ends the process the usual way (on a
-        // busy machine the start can take longer), so try again later.
+        // busy machine, or under the sanitizers, where the procedural maps take seconds, the start can take
+        // longer), so try again later.
         int status = 0;
-        for (int delay_ms : {300, 1000, 3000}) {
+        for (int delay_ms : {300, 1000, 3000, 10000}) {
             status = interrupt_after(c.exe, args, std::chrono::milliseconds(delay_ms));
             if (!WIFSIGNALED(status)) break;
         }
