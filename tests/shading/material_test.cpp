@@ -72,7 +72,7 @@ TEST_CASE("every built-in material is registered with its parameters documented"
     const MaterialRegistry r = make_material_registry();
     CHECK(r.category() == "material");
     CHECK(r.names() == std::vector<std::string>{"ashikhmin-shirley", "blinn-phong", "cook-torrance", "glass", "lambert",
-                                                "mirror", "phong"});
+                                                "mirror", "phong", "rough-dielectric"});
     for (const auto& name : r.names()) {
         INFO(name);
         // The shared keys are declared by every material, as one group, once each.

@@ -24,4 +24,23 @@ RGB CookTorranceBrdf::eval(const Vec3& wo, const Vec3& wi) const {
     return m_kd * kInvPi + m_ks * m_fresnel.eval(cos_d) * lobe;
 }
 
+float CookTorranceBrdf::pdf(const Vec3& wo, const Vec3& wi) const {
+    const float p_lobe =
+        detail::specular_probability(channel_mean(m_kd), channel_mean(m_ks * m_fresnel.eval(std::min(wo.z, 1.0f))));
+    if (!detail::both_above(wo, wi) || p_lobe < 0.0f) return 0.0f;
+    const Vec3 h = detail::half_vector(wo, wi);
+    const float wo_h = glm::dot(wo, h);
+    const float lobe = wo_h > 0.0f ? m_distribution.normal_pdf(wo, h) / (4.0f * wo_h) : 0.0f;
+    return detail::two_part_pdf(p_lobe, wi.z, lobe);
+}
+
+std::optional<LobeDraw> CookTorranceBrdf::sample(const Vec3& wo, float uc, const Vec2& u) const {
+    if (!(wo.z > 0.0f)) return std::nullopt;
+    const float p_lobe =
+        detail::specular_probability(channel_mean(m_kd), channel_mean(m_ks * m_fresnel.eval(std::min(wo.z, 1.0f))));
+    if (p_lobe < 0.0f) return std::nullopt;
+    return detail::draw_two_part(p_lobe, uc, u,
+                                 [&] { return detail::mirror_about(wo, m_distribution.sample_normal(wo, u)); });
+}
+
 }  // namespace rtlab

@@ -53,6 +53,33 @@ float MicrofacetDistribution::g1_over_cos(const Vec3& v) const {
     return 2.0f / (z * (1.0f + std::erf(a)) + alpha_s * std::exp(-a * a) * kInvSqrtPi);
 }
 
+Vec3 MicrofacetDistribution::sample_normal(const Vec3& wo, const Vec2& u) const {
+    if (m_model == MicrofacetModel::beckmann) {
+        // tan^2(theta_m) = -alpha^2 log(1 - u): the slopes are Gaussian; m from the slope, not from angles,
+        // so narrow lobes keep their sines.
+        const float tan_m = m_alpha * std::sqrt(-std::log1p(-u.x));
+        const float phi = 2.0f * kPi * u.y;
+        return glm::normalize(Vec3(tan_m * std::cos(phi), tan_m * std::sin(phi), 1.0f));
+    }
+    // Heitz 2018: stretch wo to the hemisphere configuration of alpha = 1, sample the projected area of a
+    // half disk (a disk, its far half squashed by how much the viewer sees of it), unstretch.
+    const Vec3 v = glm::normalize(Vec3(m_alpha * wo.x, m_alpha * wo.y, wo.z));
+    const float len2 = v.x * v.x + v.y * v.y;
+    const Vec3 t1 = len2 > 0.0f ? Vec3(-v.y, v.x, 0.0f) / std::sqrt(len2) : Vec3(1.0f, 0.0f, 0.0f);
+    const Vec3 t2 = glm::cross(v, t1);
+    const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
+    const float p1 = r * std::cos(phi);
+    const float s = 0.5f * (1.0f + v.z);
+    const float p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * r * std::sin(phi);
+    const Vec3 n = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * v;
+    return glm::normalize(Vec3(m_alpha * n.x, m_alpha * n.y, std::max(0.0f, n.z)));
+}
+
+float MicrofacetDistribution::normal_pdf(const Vec3& wo, const Vec3& m) const {
+    if (m_model == MicrofacetModel::beckmann) return m.z > 0.0f ? d(m) * m.z : 0.0f;
+    return g1_over_cos(wo) * std::max(0.0f, glm::dot(wo, m)) * d(m);
+}
+
 float MicrofacetDistribution::g1(const Vec3& v) const {
     // The product can round a hair above 1 near the normal.
     return std::min(1.0f, v.z * g1_over_cos(v));

@@ -60,6 +60,11 @@ ScalarChannel::ScalarChannel(std::shared_ptr<const Texture> texture, float lo, f
 
 float ScalarChannel::clamp(float x) const { return x == x ? std::clamp(x, m_lo, m_hi) : m_nan; }
 
+MicrofacetModel read_microfacet_model(const Params& p) {
+    return one_of(p, "distribution", "ggx", {"ggx", "beckmann"}) == "ggx" ? MicrofacetModel::ggx
+                                                                          : MicrofacetModel::beckmann;
+}
+
 TypeSpec& with_material_params(TypeSpec& spec) { return spec.extend(material_shared_params(), "material"); }
 
 TypeSpec with_material_params(TypeSpec&& spec) {

@@ -5,6 +5,7 @@
 // "constant or texture" convention is the textures library's (rtlab/textures/texture_param.hpp).
 #include <rtlab/core/param_checks.hpp>
 #include <rtlab/core/params.hpp>
+#include <rtlab/shading/brdf.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>
 #include <rtlab/textures/texture.hpp>
@@ -71,6 +72,16 @@ TypeSpec with_material_params(TypeSpec&& spec);
 /// The declaration of a diffuse plus specular-lobe material (phong, blinn-phong): kd, ks and exponent.
 TypeSpec lobe_spec(std::string doc, std::string exponent_doc);
 
+/// The Whitted defaults of a dielectric model: ior 1.5, kr and kt 0 (its own lobes reflect and refract).
+inline WhittedDefaults glass_defaults() {
+    WhittedDefaults d;
+    d.ior = 1.5f;
+    return d;
+}
+
+/// The "distribution" parameter of the microfacet models: ggx (default) or beckmann.
+MicrofacetModel read_microfacet_model(const Params& params);
+
 void register_lambert(MaterialRegistry& registry);
 void register_phong(MaterialRegistry& registry);
 void register_blinn_phong(MaterialRegistry& registry);
@@ -78,6 +89,7 @@ void register_cook_torrance(MaterialRegistry& registry);
 void register_ashikhmin_shirley(MaterialRegistry& registry);
 void register_mirror(MaterialRegistry& registry);
 void register_glass(MaterialRegistry& registry);
+void register_rough_dielectric(MaterialRegistry& registry);
 
 void register_point(LightRegistry& registry);
 void register_directional(LightRegistry& registry);

@@ -21,7 +21,7 @@ Material::Term Material::make_term(const std::shared_ptr<const Texture>& texture
     return {texture.get(), RGB{}};
 }
 
-RGB Material::eval(const Term& term, const TextureLookup& lookup) {
+RGB Material::term_value(const Term& term, const TextureLookup& lookup) {
     return term.texture ? term.texture->eval(lookup) : term.value;
 }
 
@@ -58,8 +58,8 @@ float Material::opacity(const TextureLookup& lookup) const {
 SurfaceTerms Material::looked_up_terms(const TextureLookup& lookup) const {
     SurfaceTerms t;
     local_terms(lookup, t);
-    t.kr = eval(m_kr, lookup);
-    t.kt = eval(m_kt, lookup);
+    t.kr = term_value(m_kr, lookup);
+    t.kt = term_value(m_kt, lookup);
     if (m_kr.texture || m_kt.texture) {
         t.kr = clamp_rgb(t.kr, 1.0f);
         t.kt = clamp_rgb(t.kt, 1.0f);
@@ -71,7 +71,7 @@ SurfaceTerms Material::looked_up_terms(const TextureLookup& lookup) const {
             }
         }
     }
-    t.emission = eval(m_emission, lookup);
+    t.emission = term_value(m_emission, lookup);
     t.opacity = opacity(lookup);
     return t;
 }
@@ -79,7 +79,7 @@ SurfaceTerms Material::looked_up_terms(const TextureLookup& lookup) const {
 RGB Material::looked_up_shadow_transmittance(const TextureLookup& lookup) const {
     if (!m_transmits) return RGB(0.0f);
     const float a = opacity(lookup);
-    RGB kt = eval(m_kt, lookup);
+    RGB kt = term_value(m_kt, lookup);
     if (m_kt.texture) kt = clamp_rgb(kt, 1.0f);
     return RGB(1.0f - a) + a * kt;
 }

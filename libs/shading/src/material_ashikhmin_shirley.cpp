@@ -14,6 +14,7 @@
 #include <rtlab/shading/brdf.hpp>
 
 #include "builtin_params.hpp"
+#include "sampled_reflection.hpp"
 
 #include <algorithm>
 #include <string>
@@ -21,11 +22,11 @@
 namespace rtlab::shading_detail {
 
 namespace {
-class AshikhminShirleyMaterial final : public Material {
+class AshikhminShirleyMaterial final : public SampledReflection<AshikhminShirleyMaterial> {
 public:
     AshikhminShirleyMaterial(Whitted w, std::shared_ptr<const Texture> rd, std::shared_ptr<const Texture> rs,
                              std::shared_ptr<const Texture> nu, std::shared_ptr<const Texture> nv)
-        : Material(std::move(w)),
+        : SampledReflection(std::move(w)),
           m_rd(std::move(rd)),
           m_rs(std::move(rs)),
           m_nu(std::move(nu), 0.0f, kMaxExponent, 0.0f),
@@ -38,6 +39,11 @@ public:
         if (!(wo.z > 0.0f && wi.z > 0.0f)) return {};
         const AshikhminShirleyBrdf f(t.diffuse, t.specular, t.shape_u, t.shape_v);
         return f.eval(wo, wi) * (c == Convention::physical ? wi.z : wi.z * kPi);
+    }
+
+    /// The physical model of brdf.hpp at one hit: SampledReflection's lobes.
+    AshikhminShirleyBrdf brdf(const SurfaceTerms& t) const {
+        return AshikhminShirleyBrdf(t.diffuse, t.specular, t.shape_u, t.shape_v);
     }
 
 protected:

@@ -11,17 +11,18 @@
 #include <rtlab/shading/brdf.hpp>
 
 #include "builtin_params.hpp"
+#include "sampled_reflection.hpp"
 
 #include <cmath>
 
 namespace rtlab::shading_detail {
 
 namespace {
-class BlinnPhongMaterial final : public Material {
+class BlinnPhongMaterial final : public SampledReflection<BlinnPhongMaterial> {
 public:
     BlinnPhongMaterial(Whitted w, std::shared_ptr<const Texture> kd, std::shared_ptr<const Texture> ks,
                        std::shared_ptr<const Texture> exponent)
-        : Material(std::move(w)),
+        : SampledReflection(std::move(w)),
           m_kd(std::move(kd)),
           m_ks(std::move(ks)),
           m_exponent(std::move(exponent), 0.0f, kMaxExponent, 0.0f) {
@@ -35,6 +36,9 @@ public:
         const float nh = h.z / glm::length(h);
         return t.diffuse * wi.z + t.specular * std::pow(nh, t.shape_u);
     }
+
+    /// The physical model of brdf.hpp at one hit: SampledReflection's lobes.
+    BlinnPhongBrdf brdf(const SurfaceTerms& t) const { return BlinnPhongBrdf(t.diffuse, t.specular, t.shape_u); }
 
 protected:
     void local_terms(const TextureLookup& q, SurfaceTerms& t) const override {

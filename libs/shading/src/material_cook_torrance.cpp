@@ -25,6 +25,7 @@
 #include <rtlab/shading/optics.hpp>
 
 #include "builtin_params.hpp"
+#include "sampled_reflection.hpp"
 
 #include <algorithm>
 #include <string>
@@ -32,11 +33,11 @@
 namespace rtlab::shading_detail {
 
 namespace {
-class CookTorranceMaterial final : public Material {
+class CookTorranceMaterial final : public SampledReflection<CookTorranceMaterial> {
 public:
     CookTorranceMaterial(Whitted w, std::shared_ptr<const Texture> kd, std::shared_ptr<const Texture> ks,
                          std::shared_ptr<const Texture> roughness, MicrofacetModel model, const Fresnel& fresnel)
-        : Material(std::move(w)),
+        : SampledReflection(std::move(w)),
           m_kd(std::move(kd)),
           m_ks(std::move(ks)),
           m_roughness(std::move(roughness), 0.0f, 1.0f, 1.0f),  // a NaN roughness is matte, never a spike
@@ -50,6 +51,11 @@ public:
         const CookTorranceBrdf f(t.diffuse, t.specular, MicrofacetDistribution::from_roughness(m_model, t.shape_u),
                                  m_fresnel);
         return f.eval(wo, wi) * (c == Convention::physical ? wi.z : wi.z * kPi);
+    }
+
+    /// The physical model of brdf.hpp at one hit: SampledReflection's lobes.
+    CookTorranceBrdf brdf(const SurfaceTerms& t) const {
+        return {t.diffuse, t.specular, MicrofacetDistribution::from_roughness(m_model, t.shape_u), m_fresnel};
     }
 
 protected:

@@ -24,6 +24,19 @@ public:
         return t.diffuse * (c == Convention::physical ? wi.z * kInvPi : wi.z);
     }
 
+    // Sampled: albedo / pi, cosine sampling.
+    bool has_lobes() const override { return true; }
+    RGB lobe_eval(const SurfaceTerms& t, const Vec3&, const Vec3&, TransportMode) const override {
+        return t.diffuse * kInvPi;
+    }
+    float lobe_pdf(const SurfaceTerms&, const Vec3& wo, const Vec3& wi, TransportMode) const override {
+        return LambertBrdf::pdf(wo, wi);
+    }
+    std::optional<LobeDraw> lobe_sample(const SurfaceTerms&, const Vec3& wo, float, const Vec2& u,
+                                        TransportMode) const override {
+        return LambertBrdf::sample(wo, u);
+    }
+
 protected:
     void local_terms(const TextureLookup& q, SurfaceTerms& t) const override { t.diffuse = m_albedo.eval(q); }
 

@@ -13,6 +13,7 @@ void register_builtins(MaterialRegistry& registry) {
     shading_detail::register_ashikhmin_shirley(registry);
     shading_detail::register_mirror(registry);
     shading_detail::register_glass(registry);
+    shading_detail::register_rough_dielectric(registry);
 }
 
 MaterialRegistry make_material_registry() {

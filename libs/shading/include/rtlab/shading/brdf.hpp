@@ -2,12 +2,20 @@
 /// \brief Reflectance models evaluated in the local shading frame (normal = +z).
 #include <rtlab/core/color.hpp>
 #include <rtlab/core/math.hpp>
+#include <rtlab/shading/bsdf.hpp>
 #include <rtlab/shading/optics.hpp>
+
+#include <optional>
 
 namespace rtlab {
 
 /// \brief A BRDF f(wo, wi); both directions point away from the surface, in the local frame (n = +z).
 /// Directions below the surface give black.
+///
+/// The models below also sample: pdf(wo, wi) is the solid-angle density of the directions sample(wo, uc, u)
+/// draws for wo above the surface (uc picks the part, u the direction). It integrates to 1 minus the
+/// share of draws that land below the surface, which sample() returns as nullopt (absorbed). A model mixes
+/// its diffuse and specular parts in proportion to their colours' channel means.
 class Brdf {
 public:
     virtual ~Brdf() = default;
@@ -19,6 +27,9 @@ class LambertBrdf final : public Brdf {
 public:
     explicit LambertBrdf(const RGB& albedo) : m_albedo(albedo) {}
     RGB eval(const Vec3& wo, const Vec3& wi) const override;
+    /// Cosine sampling: cos(theta_i) / pi.
+    static float pdf(const Vec3& wo, const Vec3& wi);
+    static std::optional<LobeDraw> sample(const Vec3& wo, const Vec2& u);
 
 private:
     RGB m_albedo;
@@ -31,6 +42,9 @@ class PhongBrdf final : public Brdf {
 public:
     PhongBrdf(const RGB& kd, const RGB& ks, float exponent);
     RGB eval(const Vec3& wo, const Vec3& wi) const override;
+    /// Cosine sampling for kd, (e + 1) / (2 pi) cos^e(alpha) about the mirror direction for ks.
+    float pdf(const Vec3& wo, const Vec3& wi) const;
+    std::optional<LobeDraw> sample(const Vec3& wo, float uc, const Vec2& u) const;
 
 private:
     RGB m_kd, m_ks;
@@ -46,6 +60,10 @@ class BlinnPhongBrdf final : public Brdf {
 public:
     BlinnPhongBrdf(const RGB& kd, const RGB& ks, float exponent);
     RGB eval(const Vec3& wo, const Vec3& wi) const override;
+    /// Cosine sampling for kd; for ks half vectors with density (e + 1) / (2 pi) cos^e(theta_h), mirrored:
+    /// the lobe's density over wi is that over 4 (wo.h).
+    float pdf(const Vec3& wo, const Vec3& wi) const;
+    std::optional<LobeDraw> sample(const Vec3& wo, float uc, const Vec2& u) const;
 
 private:
     RGB m_kd, m_ks;
@@ -86,6 +104,14 @@ public:
     /// G1(v) / cos(theta_v), finite down to grazing v, where G1 and the cosine both go to 0.
     float g1_over_cos(const Vec3& v) const;
 
+    /// A microfacet normal (upper hemisphere) for a viewer at wo (wo.z > 0). GGX: the normals wo sees,
+    /// density G1(wo) max(0, wo.m) D(m) / cos(theta_o) (Heitz 2018, "Sampling the GGX distribution of
+    /// visible normals", JCGT 7(4)): never a normal facing away, so fewer draws are lost than with D.
+    /// Beckmann: D(m) cos(theta_m), the plain distribution (its visible normals have no closed-form sampler).
+    Vec3 sample_normal(const Vec3& wo, const Vec2& u) const;
+    /// The density of sample_normal over microfacet normals m.
+    float normal_pdf(const Vec3& wo, const Vec3& m) const;
+
 private:
     MicrofacetModel m_model;
     float m_alpha;
@@ -101,6 +127,10 @@ public:
     /// ks scales the lobe (RGB(1) for a metal, whose colour is in the conductor's Fresnel); kd, ks >= 0.
     CookTorranceBrdf(const RGB& kd, const RGB& ks, const MicrofacetDistribution& distribution, const Fresnel& fresnel);
     RGB eval(const Vec3& wo, const Vec3& wi) const override;
+    /// Cosine sampling for kd; for the lobe a normal from the distribution's sample_normal, mirrored (density
+    /// normal_pdf / (4 wo.m)). The lobe is chosen in proportion to the channel mean of ks F(cos_o).
+    float pdf(const Vec3& wo, const Vec3& wi) const;
+    std::optional<LobeDraw> sample(const Vec3& wo, float uc, const Vec2& u) const;
 
 private:
     RGB m_kd, m_ks;
@@ -117,6 +147,12 @@ public:
     /// rd, rs >= 0, and energy is conserved for rd, rs <= 1; nu, nv finite and >= 0.
     AshikhminShirleyBrdf(const RGB& rd, const RGB& rs, float nu, float nv);
     RGB eval(const Vec3& wo, const Vec3& wi) const override;
+    /// The paper's own half-vector sampling (its section 3): phi_h = atan(sqrt((nu + 1) / (nv + 1))
+    /// tan(pi u / 2)) per quadrant, cos(theta_h) = (1 - u')^(1 / (nu cos^2 phi_h + nv sin^2 phi_h + 1)), density
+    /// sqrt((nu + 1)(nv + 1)) / (2 pi) (n.h)^(nu cos^2 + nv sin^2) over h, over 4 (wo.h) over wi; cosine sampling
+    /// for the diffuse part. The lobe is chosen in proportion to the channel mean of Schlick's F at cos_o.
+    float pdf(const Vec3& wo, const Vec3& wi) const;
+    std::optional<LobeDraw> sample(const Vec3& wo, float uc, const Vec2& u) const;
 
 private:
     RGB m_rd, m_rs;

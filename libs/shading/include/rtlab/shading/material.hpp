@@ -3,9 +3,11 @@
 #include <rtlab/core/color.hpp>
 #include <rtlab/core/math.hpp>
 #include <rtlab/core/registry.hpp>
+#include <rtlab/shading/bsdf.hpp>
 #include <rtlab/textures/texture.hpp>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace rtlab {
@@ -68,6 +70,34 @@ public:
     /// Whether direct() can be non-black: mirror and glass skip their lights and shadow rays.
     virtual bool reflects_direct_light() const { return true; }
 
+    // Sampled scattering, always in the physical convention, for integrators that sample directions. The
+    // directions are in the local shading frame as bsdf.hpp says: +z is the surface's outward normal, not
+    // turned towards the viewer; opaque models answer for the side wo is on (two-sided), the Whitted
+    // refraction and dielectric models tell the sides apart (ior_outside above, ior_inside below).
+    //
+    // The mixture. With a = opacity and, when fresnel is set, F the smooth interface's reflectance for wo
+    // (n_wo_side / n_other_side; 1 under total internal reflection):
+    //   R = kr F (kr without fresnel)        mirror reflection, a delta lobe
+    //   T = kt (1 - F) (kt without fresnel)  refraction through the smooth interface, a delta lobe; under
+    //                                        total internal reflection T is added to R
+    //   B = max(0, 1 - R - T)                per channel: the model's own lobes get what the delta lobes leave
+    //   whole: a (R + T + B f_model) + (1 - a) pass-through (wi = -wo, a delta transmission lobe: a cut-out)
+    // Its albedo is a (R + T + B albedo_model) + 1 - a <= 1 whenever the model's own albedo is <= 1 (read_whitted
+    // and terms() keep kr + kt <= 1 without fresnel, each <= 1 with it). sample() chooses one of the four in
+    // proportion to the channel means of a B (0 for a model without sampled lobes), a R, a T and 1 - a; the
+    // model's own sampler then picks among its parts. In radiance mode T is scaled by (n_wo / n_wi)^2.
+    // Absorption inside (Beer-Lambert) and emission are the integrator's.
+
+    /// f(wo, wi) of the whole mixture, without the cosine; delta lobes contribute nothing.
+    RGB eval(const SurfaceTerms& terms, const Vec3& wo, const Vec3& wi, TransportMode mode) const;
+    /// The solid-angle density with which sample() draws wi (delta lobes excluded).
+    float pdf(const SurfaceTerms& terms, const Vec3& wo, const Vec3& wi, TransportMode mode) const;
+    /// A direction from the mixture: uc in [0, 1) chooses the lobe (and is reused, rescaled, by the model to
+    /// choose its part), u in [0, 1)^2 the direction. nullopt when the mixture is black or the draw is lost
+    /// (a lobe that reaches below the horizon): the path ends there.
+    std::optional<BsdfSample> sample(const SurfaceTerms& terms, const Vec3& wo, float uc, const Vec2& u,
+                                     TransportMode mode) const;
+
     /// The fraction of light a shadow ray keeps crossing this surface: (1 - opacity) + opacity kt.
     RGB shadow_transmittance(const TextureLookup& lookup) const {
         if (m_constant_shadow) return m_shadow;
@@ -90,14 +120,36 @@ protected:
     /// (a plugin's) keeps looking its terms up on every hit.
     void local_terms_are_constant();
 
+    // The model's own lobes for the sampled interface (eval/pdf/sample above), in the physical convention and
+    // without the Whitted terms, which Material adds. The default is "no sampled lobes": a plugin material
+    // that only answers direct() scatters nothing but its Whitted terms under a sampling integrator (sampling
+    // its direct() response, e.g. by cosine, would weigh light by a density that is not its own and so is
+    // not physical). A model that samples overrides all four; unless lobes_transmit(), Material hands it
+    // only pairs with wo.z > 0 and wi.z > 0, mirrored to the upper side when the viewer is below.
+    virtual bool has_lobes() const { return false; }
+    /// Whether the model's lobes reach through the surface (a dielectric): then it gets both sides as they are.
+    virtual bool lobes_transmit() const { return false; }
+    virtual RGB lobe_eval(const SurfaceTerms&, const Vec3&, const Vec3&, TransportMode) const { return {}; }
+    virtual float lobe_pdf(const SurfaceTerms&, const Vec3&, const Vec3&, TransportMode) const { return 0.0f; }
+    virtual std::optional<LobeDraw> lobe_sample(const SurfaceTerms&, const Vec3&, float, const Vec2&,
+                                                TransportMode) const {
+        return std::nullopt;
+    }
+
 private:
+    // The model's lobes on the side wo is on (two-sided opaque models), or as they are (transmitting ones).
+    RGB own_eval(const SurfaceTerms& terms, Vec3 wo, Vec3 wi, TransportMode mode) const;
+    float own_pdf(const SurfaceTerms& terms, Vec3 wo, Vec3 wi, TransportMode mode) const;
+    std::optional<LobeDraw> own_sample(const SurfaceTerms& terms, Vec3 wo, float uc, const Vec2& u,
+                                       TransportMode mode) const;
+
     /// A Whitted term with its value when constant, so constant terms cost no virtual call per hit.
     struct Term {
         const Texture* texture = nullptr;  // null when constant
         RGB value;
     };
     static Term make_term(const std::shared_ptr<const Texture>& texture, const RGB& fallback);
-    static RGB eval(const Term& term, const TextureLookup& lookup);
+    static RGB term_value(const Term& term, const TextureLookup& lookup);
     float opacity(const TextureLookup& lookup) const;
     SurfaceTerms looked_up_terms(const TextureLookup& lookup) const;
     RGB looked_up_shadow_transmittance(const TextureLookup& lookup) const;
@@ -113,9 +165,9 @@ private:
 
 using MaterialRegistry = Registry<Material>;
 
-/// Registers lambert, phong, blinn-phong, cook-torrance, ashikhmin-shirley, mirror and glass. Each doc() lists the
-/// parameters; the Whitted parameters (kr, kt, ior, ior_outside, fresnel, emission, opacity, absorption) are accepted
-/// by all.
+/// Registers lambert, phong, blinn-phong, cook-torrance, ashikhmin-shirley, mirror, glass and rough-dielectric. Each
+/// doc() lists the parameters; the Whitted parameters (kr, kt, ior, ior_outside, fresnel, emission, opacity,
+/// absorption) are accepted by all.
 void register_builtins(MaterialRegistry& registry);
 
 /// A registry with category "material" and every built-in registered.
