@@ -12,6 +12,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 using namespace rtlab;
 using namespace rtlab::test;
@@ -87,7 +88,10 @@ TEST_CASE("albedo never exceeds 1 in importance mode and is 1 for lossless smoot
     for (const MaterialCase& m : cases) {
         if (m.label.rfind("cook-torrance ggx r", 0) == 0) continue;
         const SurfaceTerms t = m.material->terms(TextureLookup{});
-        for (float c : {1.0f, 0.5f, 0.05f, -0.3f}) {
+        // Under the sanitizers (ten times slower) normal and grazing incidence only.
+        const std::vector<float> cosines =
+            kSampleScale > 1 ? std::vector<float>{1.0f, 0.05f} : std::vector<float>{1.0f, 0.5f, 0.05f, -0.3f};
+        for (float c : cosines) {
             const double a = albedo(*m.material, t, incident(c), TransportMode::importance);
             INFO(m.label << " cos_o " << c << " albedo " << a);
             CHECK(a <= 1.0 + 2e-3);
