@@ -38,7 +38,10 @@ RenderJob make_job(int size) {
     job.camera = std::make_shared<PinholeCamera>(
         CameraSpec{.eye = {0, 1.4f, 4.5f}, .look_at = {0, 0.5f, 0}, .width = size, .height = size});
     job.scene = std::make_shared<Scene>(std::vector<SceneObject>{
-        {std::make_shared<Quad>(Point3(-3, 0, 3), Vec3(6, 0, 0), Vec3(0, 0, -6)), material("lambert", floor), {}, "floor"},
+        {std::make_shared<Quad>(Point3(-3, 0, 3), Vec3(6, 0, 0), Vec3(0, 0, -6)),
+         material("lambert", floor),
+         {},
+         "floor"},
         {std::make_shared<Sphere>(Point3(-0.7f, 0.6f, 0), 0.6f), material("cook-torrance", glossy), {}, "glossy"},
         {std::make_shared<Sphere>(Point3(0.8f, 0.5f, 0.3f), 0.5f), material("lambert", ball), {}, "ball"},
         {std::make_shared<Sphere>(Point3(1.0f, 2.0f, -1.0f), 0.3f), material("lambert", lamp), {}, "lamp"}});

@@ -139,7 +139,8 @@ TEST_CASE("direct agrees with whitted in the physical convention under point lig
     // Opaque materials, point lights, no emitters: both compute f cos I / r^2 per light at the pixel centres
     // (PixelPattern::none), where the BSDF sample of direct meets no light.
     RenderJob job;
-    job.camera = std::make_shared<PinholeCamera>(CameraSpec{.eye = {0, 1, 5}, .look_at = {0, 0.3f, 0}, .width = 24, .height = 24});
+    job.camera = std::make_shared<PinholeCamera>(
+        CameraSpec{.eye = {0, 1, 5}, .look_at = {0, 0.3f, 0}, .width = 24, .height = 24});
     Params bp;
     bp.set("kd", 0.4f).set("ks", 0.3f).set("exponent", 30.0f);
     Params ct;
@@ -155,8 +156,7 @@ TEST_CASE("direct agrees with whitted in the physical convention under point lig
     double worst = 0.0, total = 0.0;
     for (std::size_t i = 0; i < whitted.pixel_count(); ++i) {
         const RGB a = whitted.pixels()[i], b = direct.pixels()[i];
-        worst = std::max(worst, double((a - b).max_component() + (b - a).max_component()) /
-                                    (1e-3 + a.max_component()));
+        worst = std::max(worst, double((a - b).max_component() + (b - a).max_component()) / (1e-3 + a.max_component()));
         total += channel_mean(a);
     }
     INFO("largest relative difference " << worst);

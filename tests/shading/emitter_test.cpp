@@ -88,7 +88,8 @@ std::vector<AreaPoint> surface_points(const Case& c, int m) {
                 const float ri2 = d->inner_radius() * d->inner_radius();
                 const float r = std::sqrt(ri2 + s * (d->radius() * d->radius() - ri2)), phi = 2.0f * kPi * t;
                 const Frame f = Frame::from_normal(d->normal());
-                out.push_back({d->centre() + f.to_world(Vec3(r * std::cos(phi), r * std::sin(phi), 0.0f)), d->normal(), a});
+                out.push_back(
+                    {d->centre() + f.to_world(Vec3(r * std::cos(phi), r * std::sin(phi), 0.0f)), d->normal(), a});
             } else {
                 const auto& sp = dynamic_cast<const Sphere&>(*c.shape);
                 const float z = 1.0f - 2.0f * s, rr = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * t;
@@ -108,7 +109,8 @@ void check_chi_square(const Case& c, const Point3& p, std::uint64_t seed, double
     auto cell = [](const Vec3& w) {
         double phi = std::atan2(double(w.y), double(w.x));
         if (phi < 0.0) phi += 2.0 * std::numbers::pi;
-        const int i = std::clamp(static_cast<int>((std::clamp(double(w.z), -1.0, 1.0) + 1.0) * 0.5 * kCos), 0, kCos - 1);
+        const int i =
+            std::clamp(static_cast<int>((std::clamp(double(w.z), -1.0, 1.0) + 1.0) * 0.5 * kCos), 0, kCos - 1);
         const int j = std::clamp(static_cast<int>(phi / (2.0 * std::numbers::pi) * kPhi), 0, kPhi - 1);
         return i * kPhi + j;
     };
@@ -127,8 +129,8 @@ void check_chi_square(const Case& c, const Point3& p, std::uint64_t seed, double
         const float cos_l = -glm::dot(w, y.n);
         if (!(cos_l > 0.0f) && !c.two_sided) continue;
         // From outside, a sphere shows p only the points facing it.
-        if (const auto* sp = dynamic_cast<const Sphere*>(c.shape.get()); sp && !c.inward &&
-                                                                     glm::dot(y.y - sp->centre(), p - y.y) <= 0.0f)
+        if (const auto* sp = dynamic_cast<const Sphere*>(c.shape.get());
+            sp && !c.inward && glm::dot(y.y - sp->centre(), p - y.y) <= 0.0f)
             continue;
         const double pdf = c.emitter->pdf_li(p, w, y.y, y.n);
         const double mass = pdf * std::abs(cos_l) * y.area / dist2;
@@ -139,7 +141,8 @@ void check_chi_square(const Case& c, const Point3& p, std::uint64_t seed, double
     double chi2 = 0.0, pool_o = 0.0, pool_e = 0.0;
     int dof = -1;
     for (int b = 0; b <= kCells; ++b) {
-        if (observed[b] > 0.0 && expected[b] < 1e-3 * n / kCells) FAIL(c.name << ": draws in cell " << b << " where pdf_li has none");
+        if (observed[b] > 0.0 && expected[b] < 1e-3 * n / kCells)
+            FAIL(c.name << ": draws in cell " << b << " where pdf_li has none");
         if (expected[b] < 5.0) {
             pool_o += observed[b];
             pool_e += expected[b];

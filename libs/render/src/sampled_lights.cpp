@@ -34,7 +34,8 @@ std::optional<float> similarity_scale(const Mat4& m) {
     const float la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
     const float tol = 1e-4f * la;
     if (std::abs(la - lb) > tol || std::abs(la - lc) > tol) return std::nullopt;
-    if (std::abs(glm::dot(a, b)) > tol * la || std::abs(glm::dot(a, c)) > tol * la || std::abs(glm::dot(b, c)) > tol * la)
+    if (std::abs(glm::dot(a, b)) > tol * la || std::abs(glm::dot(a, c)) > tol * la ||
+        std::abs(glm::dot(b, c)) > tol * la)
         return std::nullopt;
     return la;
 }

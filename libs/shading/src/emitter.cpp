@@ -30,21 +30,23 @@ Vec3 sample_uniform_sphere(const Vec2& u) {
 AreaEmitter::AreaEmitter(EmitterShape shape, const RGB& radiance, bool two_sided)
     : m_shape(std::move(shape)), m_radiance(radiance), m_two_sided(two_sided) {
     switch (m_shape.kind) {
-    case EmitterShape::Kind::triangles: {
-        // Sums in double so that a mesh of a million triangles keeps its small ones' share.
-        double sum = 0.0;
-        m_cdf.reserve(m_shape.triangles.size());
-        for (const auto& t : m_shape.triangles) {
-            sum += 0.5 * static_cast<double>(glm::length(glm::cross(t[1] - t[0], t[2] - t[0])));
-            m_cdf.push_back(static_cast<float>(sum));
+        case EmitterShape::Kind::triangles: {
+            // Sums in double so that a mesh of a million triangles keeps its small ones' share.
+            double sum = 0.0;
+            m_cdf.reserve(m_shape.triangles.size());
+            for (const auto& t : m_shape.triangles) {
+                sum += 0.5 * static_cast<double>(glm::length(glm::cross(t[1] - t[0], t[2] - t[0])));
+                m_cdf.push_back(static_cast<float>(sum));
+            }
+            m_area = static_cast<float>(sum);
+            break;
         }
-        m_area = static_cast<float>(sum);
-        break;
-    }
-    case EmitterShape::Kind::disk:
-        m_area = kPi * (m_shape.radius * m_shape.radius - m_shape.inner_radius * m_shape.inner_radius);
-        break;
-    case EmitterShape::Kind::sphere: m_area = 4.0f * kPi * m_shape.radius * m_shape.radius; break;
+        case EmitterShape::Kind::disk:
+            m_area = kPi * (m_shape.radius * m_shape.radius - m_shape.inner_radius * m_shape.inner_radius);
+            break;
+        case EmitterShape::Kind::sphere:
+            m_area = 4.0f * kPi * m_shape.radius * m_shape.radius;
+            break;
     }
     if (!(m_area > 0.0f) || !std::isfinite(m_area)) throw Error("area light: the emitting shape has no area");
 }
@@ -53,31 +55,31 @@ RGB AreaEmitter::power() const { return m_radiance * (m_area * kPi * (m_two_side
 
 AreaEmitter::SurfacePoint AreaEmitter::sample_area(const Vec2& u) const {
     switch (m_shape.kind) {
-    case EmitterShape::Kind::triangles: {
-        // Choose a triangle by area, then reuse u.x rescaled within its share.
-        const float target = u.x * m_area;
-        const auto it = std::upper_bound(m_cdf.begin(), m_cdf.end(), target);
-        const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(it - m_cdf.begin()), m_cdf.size() - 1);
-        const float lo = i == 0 ? 0.0f : m_cdf[i - 1];
-        const float share = m_cdf[i] - lo;
-        const float ux = share > 0.0f ? std::clamp((target - lo) / share, 0.0f, 0.99999994f) : 0.5f;
-        const auto& t = m_shape.triangles[i];
-        const float su = std::sqrt(ux);
-        const float b0 = 1.0f - su, b1 = u.y * su;
-        const Vec3 n = glm::cross(t[1] - t[0], t[2] - t[0]);
-        return {b0 * t[0] + b1 * t[1] + (1.0f - b0 - b1) * t[2], glm::normalize(n)};
-    }
-    case EmitterShape::Kind::disk: {
-        const float r2i = m_shape.inner_radius * m_shape.inner_radius;
-        const float r = std::sqrt(r2i + u.x * (m_shape.radius * m_shape.radius - r2i));
-        const float phi = 2.0f * kPi * u.y;
-        const Frame f = Frame::from_normal(m_shape.normal);
-        return {m_shape.centre + f.to_world(Vec3(r * std::cos(phi), r * std::sin(phi), 0.0f)), m_shape.normal};
-    }
-    case EmitterShape::Kind::sphere: {
-        const Vec3 d = sample_uniform_sphere(u);
-        return {m_shape.centre + m_shape.radius * d, m_shape.inward ? -d : d};
-    }
+        case EmitterShape::Kind::triangles: {
+            // Choose a triangle by area, then reuse u.x rescaled within its share.
+            const float target = u.x * m_area;
+            const auto it = std::upper_bound(m_cdf.begin(), m_cdf.end(), target);
+            const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(it - m_cdf.begin()), m_cdf.size() - 1);
+            const float lo = i == 0 ? 0.0f : m_cdf[i - 1];
+            const float share = m_cdf[i] - lo;
+            const float ux = share > 0.0f ? std::clamp((target - lo) / share, 0.0f, 0.99999994f) : 0.5f;
+            const auto& t = m_shape.triangles[i];
+            const float su = std::sqrt(ux);
+            const float b0 = 1.0f - su, b1 = u.y * su;
+            const Vec3 n = glm::cross(t[1] - t[0], t[2] - t[0]);
+            return {b0 * t[0] + b1 * t[1] + (1.0f - b0 - b1) * t[2], glm::normalize(n)};
+        }
+        case EmitterShape::Kind::disk: {
+            const float r2i = m_shape.inner_radius * m_shape.inner_radius;
+            const float r = std::sqrt(r2i + u.x * (m_shape.radius * m_shape.radius - r2i));
+            const float phi = 2.0f * kPi * u.y;
+            const Frame f = Frame::from_normal(m_shape.normal);
+            return {m_shape.centre + f.to_world(Vec3(r * std::cos(phi), r * std::sin(phi), 0.0f)), m_shape.normal};
+        }
+        case EmitterShape::Kind::sphere: {
+            const Vec3 d = sample_uniform_sphere(u);
+            return {m_shape.centre + m_shape.radius * d, m_shape.inward ? -d : d};
+        }
     }
     return {};
 }

@@ -35,9 +35,12 @@ std::optional<IntegratorKind> parse_integrator(std::string_view name) {
 
 std::string_view integrator_name(IntegratorKind kind) {
     switch (kind) {
-    case IntegratorKind::whitted: return "whitted";
-    case IntegratorKind::direct: return "direct";
-    case IntegratorKind::path: return "path";
+        case IntegratorKind::whitted:
+            return "whitted";
+        case IntegratorKind::direct:
+            return "direct";
+        case IntegratorKind::path:
+            return "path";
     }
     return "whitted";
 }
@@ -204,8 +207,9 @@ RGB PathIntegrator::direct(const Ray& camera_ray, const SampleStream& stream, Ra
     RGB L = beta * arrived(camera_ray, true, v, camera_ray.origin, 0.0f, true);
     if (m_options.max_depth < 1) return L;
     L += beta * sample_light(v, stream, 0, stats);
-    const std::optional<BsdfSample> bs = v.info.material->sample(
-        v.terms, v.wo_local, stream.get2d(bounce_pair(0, 3)).x, stream.get2d(bounce_pair(0, 2)), TransportMode::radiance);
+    const std::optional<BsdfSample> bs =
+        v.info.material->sample(v.terms, v.wo_local, stream.get2d(bounce_pair(0, 3)).x, stream.get2d(bounce_pair(0, 2)),
+                                TransportMode::radiance);
     if (!bs) return L;
     beta *= bs->value;
     if (beta.is_black()) return L;

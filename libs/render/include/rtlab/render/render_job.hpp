@@ -18,7 +18,7 @@ struct RenderJob {
     std::shared_ptr<const Camera> camera;
     std::shared_ptr<const Scene> scene;
     std::vector<std::shared_ptr<const Light>> lights;
-    WhittedOptions whitted;   ///< convention, depth, background or environment
+    WhittedOptions whitted;  ///< convention, depth, background or environment
     /// Which integrator renders: whitted reads `whitted`; direct and path read `path` and, from `whitted`, the
     /// background (a uniform environment light) or environment (looked up, not sampled) and the convention
     /// (physical only).

@@ -46,10 +46,10 @@ struct EmitterShape {
     Kind kind = Kind::triangles;
     /// triangles: each counter-clockwise about its emitting (front) normal, cross(b - a, c - a).
     std::vector<std::array<Point3, 3>> triangles;
-    Point3 centre{0.0f};                    ///< disk, sphere
-    Normal3 normal{0.0f, 0.0f, 1.0f};       ///< disk: unit, the front face's normal
+    Point3 centre{0.0f};                       ///< disk, sphere
+    Normal3 normal{0.0f, 0.0f, 1.0f};          ///< disk: unit, the front face's normal
     float radius = 0.0f, inner_radius = 0.0f;  ///< disk (annulus with inner_radius > 0), sphere
-    bool inward = false;                    ///< sphere: the front face is the inside (a reversed sphere)
+    bool inward = false;                       ///< sphere: the front face is the inside (a reversed sphere)
 };
 
 /// \brief An emitting surface of constant radiance: triangles chosen by area (a cumulative table, binary search)
