@@ -122,7 +122,7 @@ void check_chi_square(const Case& c, const Point3& p, std::uint64_t seed, double
         observed[s ? cell(s->wi) : kCells] += 1.0;
     }
     double integral = 0.0;
-    for (const AreaPoint& y : surface_points(c, 1500)) {
+    for (const AreaPoint& y : surface_points(c, 1500 / test::kSampleScale)) {
         const Vec3 d = y.y - p;
         const double dist2 = glm::dot(d, d);
         const Vec3 w = d / float(std::sqrt(dist2));

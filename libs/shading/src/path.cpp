@@ -139,11 +139,11 @@ RGB PathIntegrator::visibility(const SurfaceHit& from, const EmitterSample& s, R
     return {};
 }
 
-RGB PathIntegrator::sample_light(const Vertex& v, const SampleStream& stream, std::uint32_t bounce,
+RGB PathIntegrator::sample_light(const Vertex& v, float u_choice, const SampleStream& stream, std::uint32_t bounce,
                                  RayStats& stats) const {
     const Material& material = *v.info.material;
     if (!material.reflects_direct_light()) return {};
-    const LightSet::Entry* light = m_lights.choose(stream.get2d(bounce_pair(bounce, 0)).x);
+    const LightSet::Entry* light = m_lights.choose(u_choice);
     if (!light) return {};
     const std::optional<EmitterSample> s = light->emitter->sample_li(v.hit.point, stream.get2d(bounce_pair(bounce, 1)));
     if (!s) return {};
@@ -172,7 +172,9 @@ RGB PathIntegrator::path(const Ray& camera_ray, const SampleStream& stream, RayS
         L += beta * arrived(ray, found, v, from, bsdf_pdf, specular);
         if (!found || depth >= m_options.max_depth) break;
         const auto bounce = static_cast<std::uint32_t>(depth);
-        L += beta * sample_light(v, stream, bounce, stats);
+        // Pair 0 serves the light choice (x) and Russian roulette (y): drawn once.
+        const Vec2 u_choice = stream.get2d(bounce_pair(bounce, 0));
+        L += beta * sample_light(v, u_choice.x, stream, bounce, stats);
         const std::optional<BsdfSample> bs =
             v.info.material->sample(v.terms, v.wo_local, stream.get2d(bounce_pair(bounce, 3)).x,
                                     stream.get2d(bounce_pair(bounce, 2)), TransportMode::radiance);
@@ -186,7 +188,7 @@ RGB PathIntegrator::path(const Ray& camera_ray, const SampleStream& stream, RayS
         // that have a single emitted term left to add.
         if (m_options.roulette && depth + 1 >= m_options.roulette_depth && depth + 1 < m_options.max_depth) {
             const float q = std::min(m_options.max_survival, beta.max_component());
-            if (!(stream.get2d(bounce_pair(bounce, 0)).y < q)) break;
+            if (!(u_choice.y < q)) break;
             beta *= 1.0f / q;
         }
         const Vec3 wi = v.frame.to_world(bs->wi);
@@ -206,7 +208,7 @@ RGB PathIntegrator::direct(const Ray& camera_ray, const SampleStream& stream, Ra
     beta *= v.absorbed;
     RGB L = beta * arrived(camera_ray, true, v, camera_ray.origin, 0.0f, true);
     if (m_options.max_depth < 1) return L;
-    L += beta * sample_light(v, stream, 0, stats);
+    L += beta * sample_light(v, stream.get2d(bounce_pair(0, 0)).x, stream, 0, stats);
     const std::optional<BsdfSample> bs =
         v.info.material->sample(v.terms, v.wo_local, stream.get2d(bounce_pair(0, 3)).x, stream.get2d(bounce_pair(0, 2)),
                                 TransportMode::radiance);

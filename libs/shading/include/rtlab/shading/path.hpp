@@ -60,7 +60,8 @@ private:
     struct Vertex;
     bool find(const Ray& ray, Vertex& v) const;
     RGB arrived(const Ray& ray, bool found, const Vertex& v, const Point3& from, float bsdf_pdf, bool specular) const;
-    RGB sample_light(const Vertex& v, const SampleStream& stream, std::uint32_t bounce, RayStats& stats) const;
+    RGB sample_light(const Vertex& v, float u_choice, const SampleStream& stream, std::uint32_t bounce,
+                     RayStats& stats) const;
     RGB visibility(const SurfaceHit& from, const EmitterSample& s, RayStats& stats) const;
 
     const SceneQuery& m_scene;
