@@ -57,7 +57,10 @@ TEST_CASE("area lights sample the object's own surface on its emitting side", "[
     const Mat4 mirror = glm::scale(Mat4(1.0f), Vec3(-1.0f, 1.0f, 1.0f));
     const Mat4 placed = glm::rotate(glm::translate(Mat4(1.0f), Vec3(0.2f, 0.1f, 0.0f)), 0.7f, Vec3(1, 1, 0));
     auto mesh = std::make_shared<TriangleMesh>();
-    mesh->positions = {{-0.5f, 0, -0.5f}, {0.5f, 0, -0.5f}, {0.7f, 0, 0.5f}, {-0.5f, 0, 0.4f}};  // flat (no part hides another), not a parallelogram
+    mesh->positions = {{-0.5f, 0, -0.5f},
+                       {0.5f, 0, -0.5f},
+                       {0.7f, 0, 0.5f},
+                       {-0.5f, 0, 0.4f}};  // flat (no part hides another), not a parallelogram
     mesh->triangles = {{0, 1, 2}, {0, 2, 3}};
     const auto mesh_shape = std::make_shared<MeshShape>(mesh);
     const auto quad = std::make_shared<Quad>(Point3(-0.4f, 0, -0.3f), Vec3(0.8f, 0, 0), Vec3(0, 0.2f, 0.6f));
@@ -73,9 +76,10 @@ TEST_CASE("area lights sample the object's own surface on its emitting side", "[
             check_object({std::make_shared<Instance>(disk, placed * mirror), emitting(), flags, "mirrored disk"});
             const Mat4 sphere_to_world = placed * glm::scale(Mat4(1.0f), Vec3(1.5f));  // radius 0.6
             const Point3 centre(sphere_to_world * glm::vec4(0.1f, 0.0f, 0.0f, 1.0f));
-            check_object({std::make_shared<Instance>(std::make_shared<Sphere>(Point3(0.1f, 0, 0), 0.4f), sphere_to_world),
-                          emitting(), flags, "scaled sphere"},
-                         centre, reversed ? 0.3f : 2.0f);
+            check_object(
+                {std::make_shared<Instance>(std::make_shared<Sphere>(Point3(0.1f, 0, 0), 0.4f), sphere_to_world),
+                 emitting(), flags, "scaled sphere"},
+                centre, reversed ? 0.3f : 2.0f);
         }
     }
 }
