@@ -31,6 +31,7 @@ SceneOverrides scene_overrides(const CommonOptions& o) {
     overrides.tonemap = o.tonemap;
     overrides.seed = o.seed;
     overrides.max_depth = o.max_depth;
+    overrides.integrator = o.integrator;
     return overrides;
 }
 

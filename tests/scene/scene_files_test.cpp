@@ -102,3 +102,26 @@ TEST_CASE("scene file solar_system.json matches its reference image with the sha
 TEST_CASE("scene file solar_system.json matches its reference image with the package data", "[scene_files]") {
     check_scene("solar_system", test::DataSource::packages);
 }
+
+TEST_CASE("scene file cornell_box.json shows the red wall on the left and the green on the right", "[scene_files]") {
+    // Path traced small and short (32 x 32, 8 samples, 3 bounces): the walls' colours are plain at any noise.
+    SceneLoadOptions options;
+    options.use_environment = false;
+    options.overrides.width = options.overrides.height = 32;
+    options.overrides.spp = 8;
+    options.overrides.max_depth = 3;
+    const LoadedScene scene = load_scene(kSource / "scenes/cornell_box.json", options);
+    REQUIRE(scene.job.integrator == IntegratorKind::path);
+    const Image image = render_job(scene.job).image;
+    RGB left, right;
+    for (int y = 8; y < 24; ++y)
+        for (int x = 0; x < 3; ++x) {
+            left += image.at(x, y);
+            right += image.at(31 - x, y);
+        }
+    INFO("left " << left.r << " " << left.g << " " << left.b << ", right " << right.r << " " << right.g << " "
+                 << right.b);
+    CHECK(left.r > 3.0f * left.g);
+    CHECK(right.g > 2.0f * right.r);
+    CHECK(left.r > 0.5f);
+}

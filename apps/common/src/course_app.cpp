@@ -28,7 +28,8 @@ void apply_course_options(const CourseOptions& o, RenderJob& job) {
     if (o.spp) s.spp = *o.spp;
     if (o.aa_threshold) s.adaptive.threshold = *o.aa_threshold;
     if (o.aa_depth) s.adaptive.max_depth = *o.aa_depth;
-    if (o.max_depth) job.whitted.max_depth = *o.max_depth;
+    if (o.max_depth) job.whitted.max_depth = job.path.max_depth = *o.max_depth;
+    if (o.integrator) job.integrator = parse_integrator(*o.integrator).value_or(IntegratorKind::whitted);
     if (o.threads) s.threads = *o.threads;
     if (o.seed) s.seed = *o.seed;
     check_sampling(s, o);

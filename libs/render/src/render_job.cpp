@@ -1,5 +1,6 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/render/render_job.hpp>
+#include <rtlab/render/sampled_lights.hpp>
 
 #include <string>
 
@@ -10,8 +11,16 @@ RenderResult render_job(const RenderJob& job, const RenderCallbacks& callbacks) 
     if (!job.scene) throw Error("render job: no scene");
     for (std::size_t i = 0; i < job.lights.size(); ++i)
         if (!job.lights[i]) throw Error("render job: light " + std::to_string(i) + " is null");
-    const WhittedIntegrator integrator(*job.scene, job.lights, job.whitted);
-    const WhittedRadiance source(integrator);
+    if (job.integrator == IntegratorKind::whitted) {
+        const WhittedIntegrator integrator(*job.scene, job.lights, job.whitted);
+        const WhittedRadiance source(integrator);
+        return render(*job.camera, source, job.settings, callbacks);
+    }
+    const SampledLights sampled = make_sampled_lights(job.scene, job.lights, job.whitted);
+    PathOptions options = job.path;
+    if (!options.environment) options.environment = job.whitted.environment;
+    const PathIntegrator integrator(*sampled.scene, sampled.lights, options);
+    const PathRadiance source(integrator, job.integrator);
     return render(*job.camera, source, job.settings, callbacks);
 }
 

@@ -134,10 +134,29 @@ void read_sampling(LoadContext& ctx, const Json& r, const std::string& p) {
 void read_whitted(LoadContext& ctx, const Json& r, const std::string& p) {
     WhittedOptions& whitted = ctx.out.job.whitted;
     auto at = [&](const char* key) { return pointer_append(p, key); };
+    PathOptions& path = ctx.out.job.path;
+    // One depth for every integrator: Whitted's reflections and refractions, the path tracer's bounces.
     if (r.contains("max_depth"))
         if (auto v = read_integer(ctx.diag, r["max_depth"], at("max_depth"), 0, 100))
-            whitted.max_depth = static_cast<int>(*v);
-    if (ctx.options.overrides.max_depth) whitted.max_depth = *ctx.options.overrides.max_depth;
+            whitted.max_depth = path.max_depth = static_cast<int>(*v);
+    if (ctx.options.overrides.max_depth) whitted.max_depth = path.max_depth = *ctx.options.overrides.max_depth;
+    if (r.contains("roulette_depth"))
+        if (auto v = read_integer(ctx.diag, r["roulette_depth"], at("roulette_depth"), 0, 100))
+            path.roulette_depth = static_cast<int>(*v);
+    auto read_kind = [&](const std::string& name, const std::string& where) {
+        if (auto kind = parse_integrator(name))
+            ctx.out.job.integrator = *kind;
+        else if (where.empty())
+            ctx.diag.error_at(0, "--integrator: unknown integrator '" + name + "'" +
+                                     did_you_mean(name, {"whitted", "direct", "path"}) +
+                                     "; expected whitted, direct or path");
+        else
+            ctx.error(where, "unknown integrator '" + name + "'" + did_you_mean(name, {"whitted", "direct", "path"}) +
+                                 "; expected whitted, direct or path");
+    };
+    if (r.contains("integrator"))
+        if (auto name = read_string(ctx.diag, r["integrator"], at("integrator"))) read_kind(*name, at("integrator"));
+    if (ctx.options.overrides.integrator) read_kind(*ctx.options.overrides.integrator, "");
     if (r.contains("min_weight"))
         if (auto v = read_number(ctx.diag, r["min_weight"], at("min_weight"), 0.0, 1.0))
             whitted.min_weight = static_cast<float>(*v);
@@ -289,7 +308,7 @@ void read_render(LoadContext& ctx, const Json& doc, const std::optional<CameraRe
     if (!expect_object(ctx.diag, r, p, "the render settings")) return;
     check_keys(ctx.diag, r, p,
                {"width", "height", "aa", "spp", "max_depth", "background", "skybox", "tonemap", "convention", "seed",
-                "output", "threads", "min_weight", "max_crossings"});
+                "output", "threads", "min_weight", "max_crossings", "integrator", "roulette_depth"});
     std::int64_t width = 640, height = 480;
     const bool size_ok = read_size(ctx, r, p, width, height);
     read_sampling(ctx, r, p);

@@ -100,6 +100,9 @@ const std::vector<ParamSpec>& material_shared_params() {
         s.add("fresnel", ParamKind::boolean, "weight kr by the Fresnel reflectance F and kt by 1 - F")
             .defaults("false");
         s.add("emission", ParamKind::texture, "light the surface gives off itself").defaults("0");
+        s.add("emission_two_sided", ParamKind::boolean,
+              "under direct and path, emission leaves both faces (else only the front, the outward normal's side)")
+            .defaults("false");
         s.add("opacity", ParamKind::scalar,
               "cut-outs, shadow rays too: a texture's alpha when it has one, else its channel mean")
             .defaults("1")
@@ -121,6 +124,7 @@ Material::Whitted read_whitted(const Params& p, const WhittedDefaults& d) {
     w.ior_inside = positive_float(p, "ior", d.ior);
     w.ior_outside = positive_float(p, "ior_outside", 1.0f);
     w.fresnel = p.get_bool("fresnel", d.fresnel);
+    w.emission_two_sided = p.get_bool("emission_two_sided", false);
     w.absorption = finite_rgb(p, "absorption", RGB(0.0f));
     if (!shading_detail::non_negative(w.absorption)) fail_param(p, "absorption", "must be >= 0");
 

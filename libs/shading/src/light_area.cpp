@@ -41,6 +41,11 @@ public:
         return s;
     }
 
+    std::optional<EmittingQuad> emitting_quad() const override {
+        const float area = glm::length(glm::cross(m_u, m_v));
+        return EmittingQuad{m_corner, m_u, m_v, m_intensity * static_cast<float>(m_n * m_n) / area, m_two_sided};
+    }
+
 private:
     Point3 m_corner;
     Vec3 m_u, m_v, m_normal;

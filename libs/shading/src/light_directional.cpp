@@ -22,6 +22,8 @@ public:
         s.arriving = m_intensity;
         return s;
     }
+    RGB power(float scene_radius) const override { return m_intensity * (kPi * scene_radius * scene_radius); }
+    bool is_delta() const override { return true; }
 
 private:
     Vec3 m_wi;

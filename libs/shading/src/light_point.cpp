@@ -18,6 +18,8 @@ public:
     LightSample sample(const Point3& p, int, Vec2, Convention c) const override {
         return point_sample(p, m_position, m_intensity, c);
     }
+    RGB power(float) const override { return m_intensity * (4.0f * kPi); }
+    bool is_delta() const override { return true; }
 
 private:
     Point3 m_position;

@@ -1,3 +1,5 @@
+#include "shading_frame.hpp"
+
 #include <rtlab/core/error.hpp>
 #include <rtlab/core/frame.hpp>
 #include <rtlab/geometry/spawn.hpp>
@@ -11,7 +13,8 @@ namespace rtlab {
 
 namespace {
 
-RGB exp_rgb(const RGB& c) { return {std::exp(c.r), std::exp(c.g), std::exp(c.b)}; }
+using shading_detail::exp_rgb;
+using shading_detail::shading_frame;
 
 // A smooth normal can send a reflection below the true surface (or a refraction above it), where it would
 // start inside the object and leak light. Such a direction is mirrored in the true tangent plane, which
@@ -22,15 +25,6 @@ Vec3 keep_on_side(Vec3 dir, const Normal3& ng, float side) {
     dir -= 2.0f * glm::dot(dir, ng) * ng;
     if (glm::dot(dir, ng) * side <= 0.0f) dir += side * 1e-3f * ng;  // exactly in the plane
     return glm::normalize(dir);
-}
-
-// The shading frame: the shading normal, and the surface tangent as local +x (anisotropic models need it).
-Frame shading_frame(const Normal3& n, const Vec3& tangent) {
-    Vec3 s = tangent - glm::dot(tangent, n) * n;
-    const float len = glm::length(s);
-    if (!(len > 1e-6f) || !std::isfinite(len)) return Frame::from_normal(n);
-    s /= len;
-    return Frame{s, glm::cross(n, s), n};
 }
 
 }  // namespace

@@ -35,12 +35,13 @@ struct CommonOptions {
     /// --width, --height. An app that sets both before add_common gets both after parsing (one flag alone
     /// keeps the default's aspect ratio); rtlab-render leaves them unset (the scene's size).
     std::optional<int> width, height;
-    std::optional<std::string> aa;      ///< none, grid, random, jittered, adaptive
-    std::optional<int> spp;             ///< exactly this many samples per pixel
-    std::optional<float> aa_threshold;  ///< adaptive: colour difference that splits a square
-    std::optional<int> aa_depth;        ///< adaptive: subdivision depth
-    std::optional<int> max_depth;       ///< reflection and refraction depth
-    std::optional<int> threads;         ///< 0: every core
+    std::optional<std::string> aa;          ///< none, grid, random, jittered, adaptive
+    std::optional<int> spp;                 ///< exactly this many samples per pixel
+    std::optional<float> aa_threshold;      ///< adaptive: colour difference that splits a square
+    std::optional<int> aa_depth;            ///< adaptive: subdivision depth
+    std::optional<int> max_depth;           ///< reflection and refraction depth
+    std::optional<std::string> integrator;  ///< whitted | direct | path
+    std::optional<int> threads;             ///< 0: every core
     std::optional<std::uint64_t> seed;
     std::optional<std::string> tonemap;  ///< a tone operator name or "none"
     bool quiet = false;

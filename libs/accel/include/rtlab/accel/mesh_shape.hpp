@@ -18,6 +18,8 @@ public:
     bool intersect(const Ray& ray, SurfaceHit& hit) const override;
     bool occluded(const Ray& ray) const override { return m_accel->occluded(ray); }
     const TriangleAccelerator& accelerator() const { return *m_accel; }
+    /// The triangles, for an area light that samples them by area.
+    const TriangleMesh& mesh() const { return *m_mesh; }
 
 private:
     std::shared_ptr<const TriangleMesh> m_mesh;

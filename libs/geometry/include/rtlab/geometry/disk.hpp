@@ -15,6 +15,11 @@ public:
     AABB bounds() const override;
     bool intersect(const Ray& ray, SurfaceHit& hit) const override;
     bool occluded(const Ray& ray) const override;
+    // What an area light samples the disk by.
+    const Point3& centre() const { return m_centre; }
+    const Normal3& normal() const { return m_normal; }
+    float radius() const { return m_radius; }
+    float inner_radius() const { return m_inner_radius; }
     using Shape::uv_footprint;
     std::optional<UvFootprint> uv_footprint(const Mat4& to_world) const override;
 

@@ -17,6 +17,9 @@ public:
     AABB bounds() const override;
     bool intersect(const Ray& ray, SurfaceHit& hit) const override;
     bool occluded(const Ray& ray) const override;
+    // What an area light over an instance samples: the inner shape placed by the matrix.
+    const Shape& shape() const { return *m_shape; }
+    const Mat4& to_world() const { return m_to_world; }
     using Shape::uv_footprint;
     std::optional<UvFootprint> uv_footprint(const Mat4& to_world) const override;
 

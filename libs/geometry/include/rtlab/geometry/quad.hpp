@@ -14,6 +14,10 @@ public:
     AABB bounds() const override;
     bool intersect(const Ray& ray, SurfaceHit& hit) const override;
     bool occluded(const Ray& ray) const override;
+    // What an area light samples the quad by.
+    const Point3& corner() const { return m_corner; }
+    const Vec3& edge_u() const { return m_u; }
+    const Vec3& edge_v() const { return m_v; }
 
     /// The distance t in (tmin, tmax) and plane coordinates of the ray's hit; false for a miss. Inline, with
     /// fill_record() below, so that a scene's list tests a quad without a virtual call and fills the record

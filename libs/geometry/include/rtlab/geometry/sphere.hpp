@@ -37,6 +37,7 @@ public:
     /// may differ); fills in the terms it works out.
     bool intersect_distance(const Ray& ray, RayTerms& terms, float& t) const;
     const Point3& centre() const { return m_centre; }
+    float radius() const { return m_radius; }
     using Shape::uv_footprint;
     std::optional<UvFootprint> uv_footprint(const Mat4& to_world) const override;
     /// complete_hit() (with_uv) or complete_hit_without_uv(), and without_tangent: hit.tangent left as it

@@ -5,6 +5,7 @@
 #include <rtlab/render/renderer.hpp>
 #include <rtlab/render/scene.hpp>
 #include <rtlab/shading/light.hpp>
+#include <rtlab/shading/path.hpp>
 #include <rtlab/shading/whitted.hpp>
 
 #include <memory>
@@ -17,7 +18,12 @@ struct RenderJob {
     std::shared_ptr<const Camera> camera;
     std::shared_ptr<const Scene> scene;
     std::vector<std::shared_ptr<const Light>> lights;
-    WhittedOptions whitted;   ///< convention, depth, background or environment
+    WhittedOptions whitted;  ///< convention, depth, background or environment
+    /// Which integrator renders: whitted reads `whitted`; direct and path read `path` and, from `whitted`, the
+    /// background (a uniform environment light) or environment (looked up, not sampled) and the convention
+    /// (physical only).
+    IntegratorKind integrator = IntegratorKind::whitted;
+    PathOptions path;
     RenderSettings settings;  ///< pattern, spp, adaptive, seed, threads
 };
 
@@ -32,6 +38,28 @@ public:
 
 private:
     const WhittedIntegrator& m_integrator;
+};
+
+/// \brief The direct or path integrator as the renderer's radiance source: numbers from the camera sample's
+/// stream (low-discrepancy under the sobol pattern), or, for the other patterns, from an independent stream of the
+/// sample's key.
+class PathRadiance final : public RadianceSource {
+public:
+    PathRadiance(const PathIntegrator& integrator, IntegratorKind kind) : m_integrator(integrator), m_kind(kind) {}
+    RGB radiance(const Ray& ray, const SampleKey& key, RayCounters& counters) const override {
+        return estimate(ray, SampleStream(SampleSequence::independent, key), counters);
+    }
+    RGB sample_radiance(const CameraSample& sample, RayCounters& counters) const override {
+        return estimate(sample.ray, sample.stream, counters);
+    }
+
+private:
+    RGB estimate(const Ray& ray, const SampleStream& stream, RayCounters& counters) const {
+        return m_kind == IntegratorKind::path ? m_integrator.path(ray, stream, counters)
+                                              : m_integrator.direct(ray, stream, counters);
+    }
+    const PathIntegrator& m_integrator;
+    IntegratorKind m_kind;
 };
 
 /// Renders a job: RenderResult::stats counts camera, shadow, reflected and refracted rays, and its image is

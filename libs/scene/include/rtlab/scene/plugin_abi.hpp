@@ -32,7 +32,7 @@
 
 /// The version of this boundary: the record's layout and the entry points' signatures. A module built for
 /// another one is refused before any other field is read.
-#define RTLAB_PLUGIN_ABI_VERSION 2
+#define RTLAB_PLUGIN_ABI_VERSION 3
 
 /// Marks the module's two entry points as exported while everything else stays hidden (-fvisibility=hidden).
 #define RTLAB_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))

@@ -30,7 +30,8 @@ struct SceneOverrides {
     std::optional<int> threads;
     std::optional<std::string> tonemap;  ///< a tone operator name or "none"
     std::optional<std::uint64_t> seed;
-    std::optional<int> max_depth;  ///< the integrator's recursion depth
+    std::optional<int> max_depth;           ///< the integrator's recursion depth
+    std::optional<std::string> integrator;  ///< whitted | direct | path
 };
 
 /// \brief How to load a scene.

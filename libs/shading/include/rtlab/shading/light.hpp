@@ -5,6 +5,8 @@
 #include <rtlab/core/registry.hpp>
 #include <rtlab/shading/material.hpp>
 
+#include <optional>
+
 namespace rtlab {
 
 /// \brief One sample of a light as seen from a point.
@@ -13,6 +15,16 @@ struct LightSample {
     Point3 position{0.0f};      ///< the sampled point on the light (shadow rays stop just short of it)
     bool at_infinity = false;   ///< directional: no position, shadow rays are unbounded
     RGB arriving;               ///< what multiplies Material::direct (already divided by the sample count)
+};
+
+/// \brief The rectangle an `area` light is, for the sampling integrators, which make it an emitting quad (so
+/// that rays can hit it and multiple importance sampling applies): corner + a edge_u + b edge_v, emitting
+/// `radiance` (intensity / area) towards edge_u x edge_v, or from both faces.
+struct EmittingQuad {
+    Point3 corner{0.0f};
+    Vec3 edge_u{1.0f, 0.0f, 0.0f}, edge_v{0.0f, 0.0f, 1.0f};
+    RGB radiance;
+    bool two_sided = false;
 };
 
 /// \brief A light. sample() is const and thread-safe; its random numbers come from the caller.
@@ -28,6 +40,16 @@ public:
     virtual bool uses_random_sample() const { return true; }
     /// Light arriving equally from every direction (ambient light), black for the others.
     virtual RGB ambient() const { return {}; }
+
+    // What the sampling integrators (direct, path) ask beside sample(), always in the physical convention.
+    /// The emitted power of a delta light (point, spot, directional), by which the integrators choose among
+    /// lights; `scene_radius` bounds the scene (a directional light's power is its irradiance over the scene's
+    /// disk). Black for a light that is not a delta light.
+    virtual RGB power(float /*scene_radius*/) const { return {}; }
+    /// Whether the light is a delta light the sampling integrators can use through sample() (index 0).
+    virtual bool is_delta() const { return false; }
+    /// The rectangle of an area light (nullopt for the others).
+    virtual std::optional<EmittingQuad> emitting_quad() const { return std::nullopt; }
 };
 
 using LightRegistry = Registry<Light>;

@@ -48,6 +48,8 @@ public:
         float ior_inside = 1.0f, ior_outside = 1.0f;
         bool fresnel = false;
         RGB absorption;  ///< per unit distance inside the medium; 0 = clear
+        /// Under the sampling integrators emission leaves the front face only (outward normal) unless this is set.
+        bool emission_two_sided = false;
     };
 
     explicit Material(Whitted whitted);
@@ -110,6 +112,9 @@ public:
     float ior_outside() const { return m_whitted.ior_outside; }
     bool fresnel() const { return m_whitted.fresnel; }
     const RGB& absorption() const { return m_whitted.absorption; }
+    /// The emission texture (never null once constructed: read_whitted gives black), for the area lights.
+    const std::shared_ptr<const Texture>& emission() const { return m_whitted.emission; }
+    bool emission_two_sided() const { return m_whitted.emission_two_sided; }
 
 protected:
     /// The model's own textures (diffuse, specular, shape numbers) for one hit.
