@@ -190,7 +190,7 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
                                  std::uint64_t request) {
     ProgressiveSettings settings;
     settings.sequence = choice.sequence;
-    settings.seed = choice.seed;
+    settings.seed = choice.seed.value_or(scene->job.settings.seed);
     settings.threads = choice.threads;
     const int width = camera->width(), height = camera->height();
     try {

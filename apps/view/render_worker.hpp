@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -29,7 +30,7 @@ struct RenderChoice {
     std::string integrator = "whitted";
     SampleSequence sequence = SampleSequence::sobol;
     int spp = 64;  ///< passes of one sample per pixel until this many
-    std::uint64_t seed = 0;
+    std::optional<std::uint64_t> seed;  ///< none: the scene's (render.seed or --seed)
     int threads = 0;
 };
 
