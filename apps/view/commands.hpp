@@ -6,7 +6,7 @@
 //   orbit YAW PITCH (degrees) | pan RIGHT UP (view heights) | dolly FACTOR | reset | print-camera
 //   tone none|reinhard|ward|aces | exposure STOPS | view image|variance|compare | reference FILE | zoom Z
 //   inspect X Y                                  print the pixel's linear RGB and sample count
-//   spp N | quit
+//   spp N | stats (frames per second, frame time, restart latency, rays/s) | quit
 #include <optional>
 #include <string>
 #include <vector>

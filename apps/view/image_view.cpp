@@ -129,7 +129,7 @@ ImageView::~ImageView() {
     glDeleteProgram(m_program);
 }
 
-void ImageView::upload(const DisplayBuffer& pixels) {
+void ImageView::upload(const DisplayBuffer& pixels, int first_row, int last_row) {
     if (pixels.width <= 0 || pixels.height <= 0) return;
     if (pixels.width != m_width || pixels.height != m_height) {
         m_width = pixels.width;
@@ -138,10 +138,13 @@ void ImageView::upload(const DisplayBuffer& pixels) {
         allocate(m_textures[1], m_width, m_height, pixels.variance.data());
         return;
     }
+    const std::size_t offset = 3 * static_cast<std::size_t>(first_row) * static_cast<std::size_t>(m_width);
     glBindTexture(GL_TEXTURE_2D, m_textures[0]);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, m_width, m_height, GL_RGB, GL_FLOAT, pixels.mean.data());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, first_row, m_width, last_row - first_row, GL_RGB, GL_FLOAT,
+                    pixels.mean.data() + offset);
     glBindTexture(GL_TEXTURE_2D, m_textures[1]);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, m_width, m_height, GL_RGB, GL_FLOAT, pixels.variance.data());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, first_row, m_width, last_row - first_row, GL_RGB, GL_FLOAT,
+                    pixels.variance.data() + offset);
 }
 
 void ImageView::set_reference(const Image& reference) {

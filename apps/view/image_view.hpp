@@ -28,7 +28,8 @@ public:
     ImageView(const ImageView&) = delete;
     ImageView& operator=(const ImageView&) = delete;
 
-    void upload(const DisplayBuffer& pixels);
+    /// Uploads rows [first_row, last_row) of the pixels (all of them when the size changed).
+    void upload(const DisplayBuffer& pixels, int first_row, int last_row);
     /// The A/B reference: drawn at the same pixels as the render (cropped or padded with black).
     void set_reference(const Image& reference);
     bool has_reference() const { return m_has_reference; }

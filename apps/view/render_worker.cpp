@@ -102,12 +102,25 @@ std::shared_ptr<const LoadedScene> RenderWorker::scene() const {
     return m_scene;
 }
 
-bool RenderWorker::take_pixels(DisplayBuffer& out) {
+std::pair<int, int> RenderWorker::take_pixels(DisplayBuffer& out) {
     std::lock_guard lock(m_mutex);
-    if (!m_dirty) return false;
-    out = m_display;
-    m_dirty = false;
-    return true;
+    if (m_dirty_begin >= m_dirty_end) return {0, 0};
+    // Only the changed rows: copying the whole buffer every frame cost the window a few milliseconds.
+    if (out.width != m_display.width || out.height != m_display.height) {
+        out = m_display;
+        m_dirty_begin = 0;
+        m_dirty_end = m_display.height;
+    } else {
+        const auto w = static_cast<std::ptrdiff_t>(m_display.width);
+        const auto b = static_cast<std::ptrdiff_t>(m_dirty_begin), e = static_cast<std::ptrdiff_t>(m_dirty_end);
+        std::copy(m_display.mean.begin() + 3 * w * b, m_display.mean.begin() + 3 * w * e, out.mean.begin() + 3 * w * b);
+        std::copy(m_display.variance.begin() + 3 * w * b, m_display.variance.begin() + 3 * w * e,
+                  out.variance.begin() + 3 * w * b);
+        std::copy(m_display.counts.begin() + w * b, m_display.counts.begin() + w * e, out.counts.begin() + w * b);
+    }
+    const std::pair<int, int> rows{m_dirty_begin, m_dirty_end};
+    m_dirty_begin = m_dirty_end = 0;
+    return rows;
 }
 
 std::vector<WorkerEvent> RenderWorker::take_events() {
@@ -231,7 +244,13 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
                     }
                     m_display.counts[i] = t.buffer.count(x, y);
                 }
-            m_dirty = true;
+            if (m_dirty_begin >= m_dirty_end) {
+                m_dirty_begin = t.y0;
+                m_dirty_end = t.y1;
+            } else {
+                m_dirty_begin = std::min(m_dirty_begin, t.y0);
+                m_dirty_end = std::max(m_dirty_end, t.y1);
+            }
         };
         callbacks.progress = [&](const RenderProgress& p) {
             std::lock_guard lock(m_mutex);

@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace rtlab::view {
@@ -77,8 +78,9 @@ public:
     /// The loaded scene (nullptr before the first successful load).
     std::shared_ptr<const LoadedScene> scene() const;
 
-    /// Copies the display buffer into `out` when tiles finished since the last call; false otherwise.
-    bool take_pixels(DisplayBuffer& out);
+    /// Copies the rows of the display buffer that finished tiles changed since the last call into `out` (all of
+    /// it when its size differs) and returns them as [first, last); an empty range when nothing changed.
+    std::pair<int, int> take_pixels(DisplayBuffer& out);
     std::vector<WorkerEvent> take_events();
     WorkerStatus status() const;
     /// The files the loaded scene read (the scene file and the assets found), for live reload.
@@ -107,7 +109,7 @@ private:
     std::chrono::steady_clock::time_point m_request_time = std::chrono::steady_clock::now();
 
     DisplayBuffer m_display;
-    bool m_dirty = false;
+    int m_dirty_begin = 0, m_dirty_end = 0;  // rows changed since take_pixels
     std::deque<WorkerEvent> m_events;
     WorkerStatus m_status;
 

@@ -95,21 +95,32 @@ public:
     }
 
     int run(CommandQueue& commands) {
-        auto last_fps = std::chrono::steady_clock::now();
+        using Clock = std::chrono::steady_clock;
+        auto last_fps = Clock::now(), frame_start = Clock::now();
         int frames = 0;
+        double work_sum = 0.0, work_max = 0.0;
         while (!glfwWindowShouldClose(m_window) && !m_quit) {
-            // At most about 60 frames a second; input wakes the loop at once.
-            glfwWaitEventsTimeout(1.0 / 60.0);
+            // About 60 frames a second: wait for input only for what is left of this frame's 1/60 s.
+            const double spent = std::chrono::duration<double>(Clock::now() - frame_start).count();
+            if (spent < 1.0 / 60.0)
+                glfwWaitEventsTimeout(1.0 / 60.0 - spent);
+            else
+                glfwPollEvents();
+            frame_start = Clock::now();
             handle_events();
             if (m_exit_status) return *m_exit_status;
-            if (m_worker.take_pixels(m_pixels)) {
-                m_view->upload(m_pixels);
-                m_tone_dirty = true;
+            if (const auto [first, last] = m_worker.take_pixels(m_pixels); first < last) {
+                m_view->upload(m_pixels, first, last);
+                // Reinhard's and Ward's statistics change with the pixels; the others need none.
+                m_tone_dirty = m_tone_dirty || m_tone.op == ToneChoice::reinhard || m_tone.op == ToneChoice::ward;
             }
             for (int pass : m_passes_to_print) say("pass " + std::to_string(pass));
             m_passes_to_print.clear();
             if (m_watch && m_watch->poll()) m_request = m_worker.reload();
             run_commands(commands);
+            // A saved window shows the statistics of exactly the pixels in it.
+            if (!m_screenshot.empty() || (m_options.screenshot_passes && m_passes_shown >= *m_options.screenshot_passes))
+                m_last_tone_time = {};
             draw_frame();
             if (!m_screenshot.empty()) {
                 save_screenshot(m_screenshot);
@@ -123,11 +134,17 @@ public:
             }
             glfwSwapBuffers(m_window);
             ++frames;
-            const auto now = std::chrono::steady_clock::now();
+            const auto now = Clock::now();
+            const double work = std::chrono::duration<double, std::milli>(now - frame_start).count();
+            work_sum += work;
+            work_max = std::max(work_max, work);
             const double elapsed = std::chrono::duration<double>(now - last_fps).count();
             if (elapsed >= 1.0) {
                 m_fps = frames / elapsed;
+                m_frame_ms = work_sum / frames;
+                m_frame_max_ms = work_max;
                 frames = 0;
+                work_sum = work_max = 0.0;
                 last_fps = now;
             }
         }
@@ -215,7 +232,12 @@ private:
 
     ViewParams view_params() {
         ViewParams p;
-        if (m_tone_dirty || m_tone.op != m_last_tone_op || m_stops != m_last_stops) {
+        // The statistics take a pass over every pixel: while tiles come in, four times a second is enough.
+        const auto now = std::chrono::steady_clock::now();
+        const bool stale = m_tone_dirty && (now - m_last_tone_time > std::chrono::milliseconds(250) ||
+                                            !m_worker.status().rendering);
+        if (stale || m_tone.op != m_last_tone_op || m_stops != m_last_stops) {
+            m_last_tone_time = now;
             std::vector<std::uint8_t> rendered(m_pixels.counts.size());
             for (std::size_t i = 0; i < rendered.size(); ++i) rendered[i] = m_pixels.counts[i] > 0;
             m_tone = tone_params(m_tone.op, m_stops, m_pixels.mean, rendered);
@@ -365,6 +387,13 @@ private:
             m_choice.spp = std::clamp(static_cast<int>(parse_float(a[0], "spp")), 1, 65536);
             m_request = m_worker.set_choice(m_choice);
             m_passes_shown = 0;
+        } else if (c.name == "stats") {
+            const WorkerStatus st = m_worker.status();
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          "stats fps %.1f frame_ms %.2f frame_max_ms %.2f restart_ms %.1f rays_per_s %.3g passes %d",
+                          m_fps, m_frame_ms, m_frame_max_ms, st.restart_ms, st.rays_per_second, st.passes_done);
+            say(text);
         } else if (c.name == "save") {
             save_image(a[0]);
         }
@@ -474,8 +503,8 @@ private:
                     s.loading ? "loading" : (s.rendering ? "rendering" : "done"));
         ImGui::ProgressBar(static_cast<float>(s.progress));
         ImGui::Text("spp %d / %d   %.2f s", s.passes_done, s.spp, s.seconds);
-        ImGui::Text("%.3g rays/s   %.0f fps", s.rays_per_second, m_fps);
-        ImGui::Text("restart %.1f ms", s.restart_ms);
+        ImGui::Text("%.3g rays/s", s.rays_per_second);
+        ImGui::Text("%.0f fps (frame %.1f ms)  restart %.1f ms", m_fps, m_frame_ms, s.restart_ms);
         ImGui::Separator();
 
         int integrator = static_cast<int>(
@@ -511,7 +540,7 @@ private:
         if (ImGui::Button("save")) run_guarded([&] { save_image(m_path); });
         ImGui::SameLine();
         if (ImGui::Button("load A/B reference")) run_guarded([&] { load_reference(m_path); });
-        ImGui::Text("zoom %.3gx  (shift+wheel; middle drag pans; 1: 1:1)", static_cast<double>(m_zoom));
+        ImGui::TextWrapped("zoom %.3gx (shift+wheel; middle drag pans; key 1: 1:1)", static_cast<double>(m_zoom));
         ImGui::Separator();
         ImGui::TextWrapped("camera: drag orbits, right drag pans, wheel zooms");
         if (ImGui::Button("reset camera (R)")) reset_camera();
@@ -571,6 +600,7 @@ private:
     ToneChoice m_last_tone_op = ToneChoice::none;
     float m_stops = 0.0f, m_last_stops = 0.0f;
     bool m_tone_dirty = true;
+    std::chrono::steady_clock::time_point m_last_tone_time;
     ViewMode m_mode = ViewMode::image;
     float m_zoom = 1.0f, m_pan_x = 0.0f, m_pan_y = 0.0f, m_split = 0.5f;
     int m_image_width = 0, m_image_height = 0;
@@ -584,7 +614,7 @@ private:
     std::filesystem::path m_screenshot;
     bool m_blocked = false, m_quit = false;
     std::optional<int> m_exit_status;
-    double m_fps = 0.0;
+    double m_fps = 0.0, m_frame_ms = 0.0, m_frame_max_ms = 0.0;  // over the last second
     char m_path[512] = "view.png";
 };
 

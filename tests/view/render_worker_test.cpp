@@ -49,7 +49,9 @@ TEST_CASE("the viewer's passes add up to rtlab-render's sobol image of the same 
     const std::uint64_t request = worker.set_choice(choice);
     REQUIRE(wait_for(worker, WorkerEvent::Kind::pass, 3, request));
     DisplayBuffer pixels;
-    REQUIRE(worker.take_pixels(pixels));
+    const auto rows = worker.take_pixels(pixels);
+    REQUIRE(rows.first == 0);
+    REQUIRE(rows.second == 36);
 
     LoadedScene scene = load_scene(kScene, small_whitted());
     scene.job.settings.pattern = PixelPattern::sobol;
@@ -96,13 +98,14 @@ TEST_CASE("a broken scene is reported and the last image stays", "[view]") {
     worker.set_choice(choice);
     REQUIRE(wait_for(worker, WorkerEvent::Kind::pass, 2, 0));
     DisplayBuffer before, after;
-    REQUIRE(worker.take_pixels(before));
+    REQUIRE(worker.take_pixels(before).second == 36);
     std::ofstream(file) << "{\"version\": 1, \"camera\": {\"fov\": }}";
     const std::uint64_t request = worker.reload();
     std::vector<WorkerEvent> seen;
     REQUIRE(wait_for(worker, WorkerEvent::Kind::error, 0, request, &seen));
     CHECK_THAT(seen.back().message, Catch::Contains("scene.json:1:"));
-    CHECK_FALSE(worker.take_pixels(after));
+    const auto rows = worker.take_pixels(after);
+    CHECK(rows.first == rows.second);
     CHECK(worker.scene() != nullptr);
     std::filesystem::remove_all(dir);
 }
