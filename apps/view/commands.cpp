@@ -14,9 +14,9 @@ std::optional<Command> parse_command(const std::string& line, const std::string&
     if (!(in >> c.name)) return std::nullopt;
     for (std::string word; in >> word;) c.args.push_back(word);
     static const std::map<std::string, std::size_t> arity{
-        {"wait", 0},   {"screenshot", 1}, {"save", 1}, {"orbit", 2}, {"pan", 2},       {"dolly", 1},
-        {"reset", 0},  {"print-camera", 0}, {"tone", 1}, {"exposure", 1}, {"view", 1}, {"reference", 1},
-        {"zoom", 1},   {"inspect", 2},    {"spp", 1},  {"stats", 0}, {"quit", 0}};
+        {"wait", 0},  {"screenshot", 1},   {"save", 1}, {"orbit", 2},    {"pan", 2},  {"dolly", 1},
+        {"reset", 0}, {"print-camera", 0}, {"tone", 1}, {"exposure", 1}, {"view", 1}, {"reference", 1},
+        {"zoom", 1},  {"inspect", 2},      {"spp", 1},  {"stats", 0},    {"quit", 0}};
     const auto it = arity.find(c.name);
     if (it == arity.end()) throw Error(where + ": unknown command '" + c.name + "'");
     if (c.name == "wait") {

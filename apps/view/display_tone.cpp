@@ -51,8 +51,8 @@ ToneParams tone_params(ToneChoice op, float stops, const std::vector<float>& rgb
         p.inv_white2 = (white > 0.0 && std::isfinite(white)) ? static_cast<float>(1.0 / (white * white)) : 0.0f;
     } else {
         constexpr double kLdMax = 100.0;
-        const double m = std::pow((1.219 + std::pow(kLdMax / 2.0, 0.4)) / (1.219 + std::pow(log_average, 0.4)), 2.5) /
-                         kLdMax;
+        const double m =
+            std::pow((1.219 + std::pow(kLdMax / 2.0, 0.4)) / (1.219 + std::pow(log_average, 0.4)), 2.5) / kLdMax;
         p.scale = static_cast<float>(m * exposure);
     }
     return p;
@@ -66,21 +66,23 @@ float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }  // N
 RGB tone_map(const ToneParams& p, const RGB& linear) {
     RGB out;
     switch (p.op) {
-    case ToneChoice::none:
-    case ToneChoice::ward: out = linear * p.scale; break;
-    case ToneChoice::aces: {
-        const RGB x = linear * p.scale;
-        out = RGB(aces_fit(std::min(x.r, 1e18f)), aces_fit(std::min(x.g, 1e18f)), aces_fit(std::min(x.b, 1e18f)));
-        break;
-    }
-    case ToneChoice::reinhard: {
-        const float lw = linear.luminance();
-        if (!(lw > 0.0f)) return RGB{};
-        const float l = p.scale * lw;
-        const float ld = l * (1.0f + l * p.inv_white2) / (1.0f + l);
-        out = linear * (ld / lw);
-        break;
-    }
+        case ToneChoice::none:
+        case ToneChoice::ward:
+            out = linear * p.scale;
+            break;
+        case ToneChoice::aces: {
+            const RGB x = linear * p.scale;
+            out = RGB(aces_fit(std::min(x.r, 1e18f)), aces_fit(std::min(x.g, 1e18f)), aces_fit(std::min(x.b, 1e18f)));
+            break;
+        }
+        case ToneChoice::reinhard: {
+            const float lw = linear.luminance();
+            if (!(lw > 0.0f)) return RGB{};
+            const float l = p.scale * lw;
+            const float ld = l * (1.0f + l * p.inv_white2) / (1.0f + l);
+            out = linear * (ld / lw);
+            break;
+        }
     }
     return RGB(clamp01(out.r), clamp01(out.g), clamp01(out.b));
 }

@@ -12,9 +12,7 @@
 namespace rtlab::view {
 
 namespace {
-std::filesystem::path normal(const std::filesystem::path& p) {
-    return std::filesystem::absolute(p).lexically_normal();
-}
+std::filesystem::path normal(const std::filesystem::path& p) { return std::filesystem::absolute(p).lexically_normal(); }
 }  // namespace
 
 FileWatch::FileWatch(std::chrono::milliseconds quiet) : m_quiet(quiet) {

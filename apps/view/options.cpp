@@ -17,7 +17,8 @@ std::optional<int> parse_view_options(int argc, char** argv, ViewOptions& o) {
                     "N FILE: render N passes, save the whole window as PNG to FILE and exit")
         ->expected(2);
     cli.add_text("--script", script, "a file of commands, run as if typed on standard input");
-    cli.add_flag("--stdin", o.commands_on_stdin, "read commands from standard input (listed in apps/view/commands.hpp)");
+    cli.add_flag("--stdin", o.commands_on_stdin,
+                 "read commands from standard input (listed in apps/view/commands.hpp)");
     cli.add_word("--integrator", o.integrator, rtlab::view::integrator_names(), "the integrator");
     cli.add_number("--exposure", o.exposure, -64, 64, "exposure in stops");
     if (const auto status = cli.parse(argc, argv)) return status;

@@ -231,12 +231,13 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
             std::lock_guard lock(m_mutex);
             if (first_tile && m_request == request)
                 m_status.restart_ms =
-                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - m_request_time).count();
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - m_request_time)
+                        .count();
             first_tile = false;
             for (int y = t.y0; y < t.y1; ++y)
                 for (int x = t.x0; x < t.x1; ++x) {
-                    const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                                          static_cast<std::size_t>(x);
+                    const std::size_t i =
+                        static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
                     const RGB m = t.buffer.mean(x, y), v = t.buffer.mean_variance(x, y);
                     for (int c = 0; c < 3; ++c) {
                         m_display.mean[3 * i + static_cast<std::size_t>(c)] = m[c];

@@ -30,7 +30,7 @@ const std::vector<std::string>& integrator_names();
 struct RenderChoice {
     std::string integrator = "whitted";
     SampleSequence sequence = SampleSequence::sobol;
-    int spp = 64;  ///< passes of one sample per pixel until this many
+    int spp = 64;                       ///< passes of one sample per pixel until this many
     std::optional<std::uint64_t> seed;  ///< none: the scene's (render.seed or --seed)
     int threads = 0;
 };
@@ -38,9 +38,9 @@ struct RenderChoice {
 /// \brief Something the window reports on its output ("pass N", "reloaded", "error ...").
 struct WorkerEvent {
     enum class Kind { pass, loaded, reloaded, error } kind;
-    int pass = 0;                  ///< passes done in this render (kind pass)
-    std::uint64_t request = 0;     ///< the request (set_camera, set_choice, reload) the render answers
-    std::string message;  ///< the loader's messages (kind error)
+    int pass = 0;               ///< passes done in this render (kind pass)
+    std::uint64_t request = 0;  ///< the request (set_camera, set_choice, reload) the render answers
+    std::string message;        ///< the loader's messages (kind error)
 };
 
 /// \brief The pixels the window shows: the mean and the variance of the mean of every pixel, and its count.
@@ -55,11 +55,11 @@ struct DisplayBuffer {
 struct WorkerStatus {
     bool loading = false, rendering = false;
     int passes_done = 0, spp = 0;
-    double seconds = 0.0;        ///< of this render
+    double seconds = 0.0;  ///< of this render
     double rays_per_second = 0.0;
-    double progress = 0.0;  ///< tiles done over tiles of every planned pass
-    std::uint64_t request = 0;     ///< the request being rendered
-    double restart_ms = 0.0;       ///< from the last request to the first finished tile of its render
+    double progress = 0.0;      ///< tiles done over tiles of every planned pass
+    std::uint64_t request = 0;  ///< the request being rendered
+    double restart_ms = 0.0;    ///< from the last request to the first finished tile of its render
 };
 
 class RenderWorker {

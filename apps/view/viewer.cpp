@@ -86,8 +86,10 @@ public:
     Viewer(const app::ViewOptions& options, SceneLoadOptions load, GLFWwindow* window)
         : m_options(options), m_window(window), m_worker(options.scene, std::move(load)) {
         m_choice.integrator = options.integrator;
-        if (options.screenshot_passes) m_choice.spp = *options.screenshot_passes;
-        else if (options.common.spp) m_choice.spp = *options.common.spp;
+        if (options.screenshot_passes)
+            m_choice.spp = *options.screenshot_passes;
+        else if (options.common.spp)
+            m_choice.spp = *options.common.spp;
         m_choice.threads = options.common.threads_or_all();
         m_stops = static_cast<float>(options.exposure.value_or(0.0));
         m_worker.set_choice(m_choice);
@@ -119,7 +121,8 @@ public:
             if (m_watch && m_watch->poll()) m_request = m_worker.reload();
             run_commands(commands);
             // A saved window shows the statistics of exactly the pixels in it.
-            if (!m_screenshot.empty() || (m_options.screenshot_passes && m_passes_shown >= *m_options.screenshot_passes))
+            if (!m_screenshot.empty() ||
+                (m_options.screenshot_passes && m_passes_shown >= *m_options.screenshot_passes))
                 m_last_tone_time = {};
             draw_frame();
             if (!m_screenshot.empty()) {
@@ -158,14 +161,18 @@ private:
     void handle_events() {
         for (const WorkerEvent& e : m_worker.take_events()) {
             switch (e.kind) {
-            case WorkerEvent::Kind::loaded:
-            case WorkerEvent::Kind::reloaded: on_loaded(e.kind == WorkerEvent::Kind::reloaded); break;
-            case WorkerEvent::Kind::error: on_error(e.message); break;
-            case WorkerEvent::Kind::pass:
-                if (e.request != m_request) break;  // a render the window no longer wants
-                m_passes_shown = e.pass;
-                m_passes_to_print.push_back(e.pass);
-                break;
+                case WorkerEvent::Kind::loaded:
+                case WorkerEvent::Kind::reloaded:
+                    on_loaded(e.kind == WorkerEvent::Kind::reloaded);
+                    break;
+                case WorkerEvent::Kind::error:
+                    on_error(e.message);
+                    break;
+                case WorkerEvent::Kind::pass:
+                    if (e.request != m_request) break;  // a render the window no longer wants
+                    m_passes_shown = e.pass;
+                    m_passes_to_print.push_back(e.pass);
+                    break;
             }
         }
     }
@@ -234,8 +241,8 @@ private:
         ViewParams p;
         // The statistics take a pass over every pixel: while tiles come in, four times a second is enough.
         const auto now = std::chrono::steady_clock::now();
-        const bool stale = m_tone_dirty && (now - m_last_tone_time > std::chrono::milliseconds(250) ||
-                                            !m_worker.status().rendering);
+        const bool stale =
+            m_tone_dirty && (now - m_last_tone_time > std::chrono::milliseconds(250) || !m_worker.status().rendering);
         if (stale || m_tone.op != m_last_tone_op || m_stops != m_last_stops) {
             m_last_tone_time = now;
             std::vector<std::uint8_t> rendered(m_pixels.counts.size());
@@ -373,16 +380,21 @@ private:
         } else if (c.name == "exposure") {
             m_stops = parse_float(a[0], "exposure");
         } else if (c.name == "view") {
-            if (a[0] == "image") m_mode = ViewMode::image;
-            else if (a[0] == "variance") m_mode = ViewMode::variance;
-            else if (a[0] == "compare") m_mode = ViewMode::compare;
-            else throw Error("rtlab-view: view: image, variance or compare, not '" + a[0] + "'");
+            if (a[0] == "image")
+                m_mode = ViewMode::image;
+            else if (a[0] == "variance")
+                m_mode = ViewMode::variance;
+            else if (a[0] == "compare")
+                m_mode = ViewMode::compare;
+            else
+                throw Error("rtlab-view: view: image, variance or compare, not '" + a[0] + "'");
         } else if (c.name == "reference") {
             load_reference(a[0]);
         } else if (c.name == "zoom") {
             m_zoom = std::clamp(parse_float(a[0], "zoom"), 0.125f, 64.0f);
         } else if (c.name == "inspect") {
-            say(inspect(static_cast<int>(parse_float(a[0], "inspect")), static_cast<int>(parse_float(a[1], "inspect"))));
+            say(inspect(static_cast<int>(parse_float(a[0], "inspect")),
+                        static_cast<int>(parse_float(a[1], "inspect"))));
         } else if (c.name == "spp") {
             m_choice.spp = std::clamp(static_cast<int>(parse_float(a[0], "spp")), 1, 65536);
             m_request = m_worker.set_choice(m_choice);
@@ -401,8 +413,8 @@ private:
 
     std::string inspect(int x, int y) const {
         if (x < 0 || y < 0 || x >= m_pixels.width || y >= m_pixels.height) return "pixel outside the image";
-        const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(m_pixels.width) +
-                              static_cast<std::size_t>(x);
+        const std::size_t i =
+            static_cast<std::size_t>(y) * static_cast<std::size_t>(m_pixels.width) + static_cast<std::size_t>(x);
         char text[160];
         std::snprintf(text, sizeof text, "pixel %d %d %.6g %.6g %.6g samples %u", x, y,
                       static_cast<double>(m_pixels.mean[3 * i]), static_cast<double>(m_pixels.mean[3 * i + 1]),
@@ -456,8 +468,8 @@ private:
         glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
         const std::size_t row = static_cast<std::size_t>(w) * 3;
         for (int y = 0; y < h; ++y)
-            std::copy_n(rgb.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(h - 1 - y) * row),
-                        row, flipped.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row));
+            std::copy_n(rgb.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(h - 1 - y) * row), row,
+                        flipped.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row));
         if (!write_png_rgb(file, w, h, flipped)) throw Error("rtlab-view: cannot write " + file.string());
         say("saved " + file.string());
     }
@@ -507,9 +519,9 @@ private:
         ImGui::Text("%.0f fps (frame %.1f ms)  restart %.1f ms", m_fps, m_frame_ms, s.restart_ms);
         ImGui::Separator();
 
-        int integrator = static_cast<int>(
-            std::find(integrator_names().begin(), integrator_names().end(), m_choice.integrator) -
-            integrator_names().begin());
+        int integrator =
+            static_cast<int>(std::find(integrator_names().begin(), integrator_names().end(), m_choice.integrator) -
+                             integrator_names().begin());
         if (combo("integrator", integrator, integrator_names())) {
             m_choice.integrator = integrator_names()[static_cast<std::size_t>(integrator)];
             restart();
@@ -624,8 +636,7 @@ std::string g_glfw_error;
 
 int run_viewer(const app::ViewOptions& options, const char* argv0) {
     SceneLoadOptions load;
-    load.data_path =
-        app::app_data_path(options.common.data_dirs, app::executable_path(argv0), "rtlab-view");
+    load.data_path = app::app_data_path(options.common.data_dirs, app::executable_path(argv0), "rtlab-view");
     load.overrides.width = options.common.width;
     load.overrides.height = options.common.height;
     load.overrides.threads = options.common.threads;
@@ -645,14 +656,16 @@ int run_viewer(const app::ViewOptions& options, const char* argv0) {
 
     glfwSetErrorCallback([](int, const char* text) { g_glfw_error = text; });
     if (!glfwInit()) {
-        std::fprintf(stderr, "rtlab-view: no display: %s\n", g_glfw_error.empty() ? "GLFW failed" : g_glfw_error.c_str());
+        std::fprintf(stderr, "rtlab-view: no display: %s\n",
+                     g_glfw_error.empty() ? "GLFW failed" : g_glfw_error.c_str());
         return app::kExitBadInput;
     }
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-    GLFWwindow* window = glfwCreateWindow(1000, 600, ("rtlab-view " + options.scene.string()).c_str(), nullptr, nullptr);
+    GLFWwindow* window =
+        glfwCreateWindow(1000, 600, ("rtlab-view " + options.scene.string()).c_str(), nullptr, nullptr);
     if (!window) {
         std::fprintf(stderr, "rtlab-view: no OpenGL 3.3 window: %s\n", g_glfw_error.c_str());
         glfwTerminate();

@@ -54,8 +54,9 @@ TEST_CASE("panning moves eye and look-at together and reset restores the file's 
 TEST_CASE("the camera snippet loads back as the same camera", "[view]") {
     OrbitCamera camera(file_camera());
     camera.orbit(0.3f, 0.1f);
-    const std::string scene = "{\"version\": 1, " + camera.json_snippet() +
-                              ", \"render\": {\"width\": 64, \"height\": 48}, \"shapes\": [{\"type\": \"sphere\", \"visible\": false}]}";
+    const std::string scene =
+        "{\"version\": 1, " + camera.json_snippet() +
+        ", \"render\": {\"width\": 64, \"height\": 48}, \"shapes\": [{\"type\": \"sphere\", \"visible\": false}]}";
     const LoadedScene loaded = parse_scene(scene, "snippet.json");
     const auto* pinhole = dynamic_cast<const PinholeCamera*>(loaded.job.camera.get());
     REQUIRE(pinhole);

@@ -61,8 +61,8 @@ public:
                 if (line.rfind(prefix, 0) == 0) return line;
                 continue;
             }
-            const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline -
-                                                                                    std::chrono::steady_clock::now());
+            const auto left =
+                std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
             if (left.count() <= 0) return "";
             pollfd p{m_out, POLLIN, 0};
             if (poll(&p, 1, static_cast<int>(left.count())) <= 0) return "";
