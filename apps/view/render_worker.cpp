@@ -72,7 +72,6 @@ std::uint64_t RenderWorker::reload() {
     std::lock_guard lock(m_mutex);
     m_request_time = std::chrono::steady_clock::now();
     m_want_load = true;
-    m_stop = true;  // the last image stays on screen while the scene loads
     m_wake.notify_all();
     return ++m_request;
 }
@@ -147,12 +146,9 @@ std::vector<std::filesystem::path> RenderWorker::watched_files() const {
 void RenderWorker::push(WorkerEvent e) { m_events.push_back(std::move(e)); }
 
 void RenderWorker::load() {
-    {
-        std::lock_guard lock(m_mutex);
-        m_want_load = false;
-        m_status.loading = true;
-    }
-    // The load is not cancellable (kd-tree builds run to the end); the last image stays on screen meanwhile.
+    lower_this_thread();
+    // A load is not cancellable (kd-tree builds run to the end), so it runs beside the render: the old scene
+    // keeps rendering, and answering the camera, until the new one is ready.
     try {
         auto scene = std::make_shared<LoadedScene>(load_scene(m_scene_file, m_load));
         std::lock_guard lock(m_mutex);
@@ -160,12 +156,14 @@ void RenderWorker::load() {
         push({m_loaded_once ? WorkerEvent::Kind::reloaded : WorkerEvent::Kind::loaded, 0, m_request, {}});
         m_loaded_once = true;
         m_restart = true;
+        m_stop = true;
     } catch (const std::exception& e) {
         std::lock_guard lock(m_mutex);
         push({WorkerEvent::Kind::error, 0, m_request, e.what()});
     }
     std::lock_guard lock(m_mutex);
     m_status.loading = false;
+    m_wake.notify_all();
 }
 
 void RenderWorker::run() {
@@ -178,24 +176,27 @@ void RenderWorker::run() {
         std::uint64_t request = 0;
         {
             std::unique_lock lock(m_mutex);
-            m_wake.wait(lock, [&] { return m_quit || m_want_load || (m_restart && m_scene); });
-            if (m_quit) return;
-            if (!m_want_load) {
-                m_restart = false;
-                m_stop = false;
-                scene = m_scene;
-                camera = m_camera ? m_camera : m_scene->job.camera;
-                choice = m_choice;
-                request = m_request;
-                m_status.request = request;
+            m_wake.wait(lock, [&] { return m_quit || (m_want_load && !m_status.loading) || (m_restart && m_scene); });
+            if (m_quit) break;
+            if (m_want_load && !m_status.loading) {
+                m_want_load = false;
+                m_status.loading = true;
+                lock.unlock();
+                if (m_loader.joinable()) m_loader.join();  // finished: it cleared `loading`
+                m_loader = std::thread([this] { load(); });
+                continue;
             }
-        }
-        if (!scene) {
-            load();
-            continue;
+            m_restart = false;
+            m_stop = false;
+            scene = m_scene;
+            camera = m_camera ? m_camera : m_scene->job.camera;
+            choice = m_choice;
+            request = m_request;
+            m_status.request = request;
         }
         render_passes(scene, camera, choice, request);
     }
+    if (m_loader.joinable()) m_loader.join();
 }
 
 void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene,

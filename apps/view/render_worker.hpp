@@ -70,7 +70,8 @@ public:
     RenderWorker& operator=(const RenderWorker&) = delete;
 
     /// Each request stops the render at once and returns its number: events of older renders carry older ones.
-    /// Loads the scene again (the last image stays on screen until the new scene renders).
+    /// Loads the scene again on a thread of its own; the current scene keeps rendering until it is loaded (a
+    /// broken file leaves it, and its image, as they are).
     std::uint64_t reload();
     /// Renders with this camera from now on (nullptr: the scene's own).
     std::uint64_t set_camera(std::shared_ptr<const Camera> camera);
@@ -113,6 +114,7 @@ private:
     std::deque<WorkerEvent> m_events;
     WorkerStatus m_status;
 
+    std::thread m_loader;  // the load under way, if any
     std::thread m_thread;  // last: started once everything above exists
 };
 
