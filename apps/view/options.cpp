@@ -23,6 +23,11 @@ std::optional<int> parse_view_options(int argc, char** argv, ViewOptions& o) {
     cli.add_number("--exposure", o.exposure, -64, 64, "exposure in stops");
     if (const auto status = cli.parse(argc, argv)) return status;
     if (scene.empty()) return cli.usage_error("give a scene file; --help shows the options");
+    // The viewer samples progressively: only the two sequences of the progressive renderer make sense.
+    if (o.common.aa && *o.common.aa != "sobol" && *o.common.aa != "random")
+        return cli.usage_error("--aa: the viewer renders progressively: sobol or random, not '" + *o.common.aa + "'");
+    if (o.common.aa_threshold || o.common.aa_depth)
+        return cli.usage_error("--aa-threshold and --aa-depth are for adaptive sampling, which the viewer does not do");
     if (!shot.empty()) {
         try {
             std::size_t used = 0;

@@ -10,7 +10,7 @@ namespace rtlab::app {
 
 struct ViewOptions {
     std::filesystem::path scene;
-    CommonOptions common;
+    CommonOptions common;  ///< -o: the file the save button writes; --aa: sobol or random
     /// --screenshot-after-passes N FILE: render N passes, save the window as PNG, exit.
     std::optional<int> screenshot_passes;
     std::filesystem::path screenshot_file;

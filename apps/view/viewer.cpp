@@ -91,6 +91,9 @@ public:
         else if (options.common.spp)
             m_choice.spp = *options.common.spp;
         m_choice.threads = options.common.threads_or_all();
+        if (options.common.aa == "random") m_choice.sequence = SampleSequence::independent;
+        if (!options.common.output.empty())
+            std::snprintf(m_path, sizeof m_path, "%s", options.common.output.c_str());  // where "save" writes
         m_stops = static_cast<float>(options.exposure.value_or(0.0));
         m_worker.set_choice(m_choice);
         m_request = m_worker.set_camera(nullptr);
@@ -206,7 +209,13 @@ private:
         ++m_errors;
         std::istringstream lines(message);
         for (std::string line; std::getline(lines, line);) say("error: " + line);
-        if (m_options.screenshot_passes && !m_worker.scene()) m_exit_status = app::kExitBadInput;
+        // Without a window to look at (a screenshot run), a scene that never loaded ends the run as a bad scene
+        // does for every rtlab app: its messages on stderr, exit status 1.
+        if (m_options.screenshot_passes && !m_worker.scene()) {
+            std::fprintf(stderr, "rtlab-view: %s\n", message.c_str());
+            m_exit_status = app::kExitBadInput;
+            return;
+        }
         // A first load that failed still watches the scene file, so that fixing it loads it.
         if (!m_watch) {
             m_watch = std::make_unique<FileWatch>();
