@@ -424,10 +424,14 @@ private:
         if (x < 0 || y < 0 || x >= m_pixels.width || y >= m_pixels.height) return "pixel outside the image";
         const std::size_t i =
             static_cast<std::size_t>(y) * static_cast<std::size_t>(m_pixels.width) + static_cast<std::size_t>(x);
-        char text[160];
-        std::snprintf(text, sizeof text, "pixel %d %d %.6g %.6g %.6g samples %u", x, y,
+        char text[240];
+        // The standard deviation of the mean: how far the pixel may still move.
+        std::snprintf(text, sizeof text, "pixel %d %d %.6g %.6g %.6g samples %u sd %.3g %.3g %.3g", x, y,
                       static_cast<double>(m_pixels.mean[3 * i]), static_cast<double>(m_pixels.mean[3 * i + 1]),
-                      static_cast<double>(m_pixels.mean[3 * i + 2]), m_pixels.counts[i]);
+                      static_cast<double>(m_pixels.mean[3 * i + 2]), m_pixels.counts[i],
+                      std::sqrt(static_cast<double>(m_pixels.variance[3 * i])),
+                      std::sqrt(static_cast<double>(m_pixels.variance[3 * i + 1])),
+                      std::sqrt(static_cast<double>(m_pixels.variance[3 * i + 2])));
         return text;
     }
 
@@ -654,7 +658,8 @@ int run_viewer(const app::ViewOptions& options, const char* argv0) {
     load.overrides.max_depth = options.common.max_depth;
     if (!options.screenshot_file.empty()) app::prepare_output(options.screenshot_file);
 
-    CommandQueue commands;
+    // Never freed: the standard-input thread may still push to it while the program ends.
+    CommandQueue& commands = *new CommandQueue;
     if (!options.script.empty()) {
         std::ifstream in(options.script);
         if (!in) throw Error(options.script.string() + ": cannot read the script");
