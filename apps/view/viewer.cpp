@@ -21,6 +21,7 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -37,6 +38,9 @@ namespace rtlab::view {
 namespace {
 
 constexpr float kPanelWidth = 340.0f;  // window pixels, times the content scale
+
+/// Set by any input (GLFW calls these before Dear ImGui's own, which it chains): the window draws again.
+std::atomic<bool> g_input{true};
 
 /// Lines the viewer prints for whoever drives it (tests wait for them): flushed at once.
 void say(const std::string& line) {
@@ -56,6 +60,10 @@ public:
         if (m_commands.empty()) return false;
         c = m_commands.front();
         return true;
+    }
+    bool empty() {
+        std::lock_guard lock(m_mutex);
+        return m_commands.empty();
     }
     void pop() {
         std::lock_guard lock(m_mutex);
@@ -106,15 +114,19 @@ public:
         double work_sum = 0.0, work_max = 0.0;
         while (!glfwWindowShouldClose(m_window) && !m_quit) {
             // About 60 frames a second: wait for input only for what is left of this frame's 1/60 s.
+            // Idle (nothing rendering, no input for a while): wait up to 0.1 s, for the file watch and commands.
             const double spent = std::chrono::duration<double>(Clock::now() - frame_start).count();
-            if (spent < 1.0 / 60.0)
-                glfwWaitEventsTimeout(1.0 / 60.0 - spent);
+            const double frame = m_idle ? 0.1 : 1.0 / 60.0;
+            if (spent < frame)
+                glfwWaitEventsTimeout(frame - spent);
             else
                 glfwPollEvents();
             frame_start = Clock::now();
+            if (g_input.exchange(false)) m_last_input = frame_start;
             handle_events();
             if (m_exit_status) return *m_exit_status;
-            if (const auto [first, last] = m_worker.take_pixels(m_pixels); first < last) {
+            const auto [first, last] = m_worker.take_pixels(m_pixels);
+            if (first < last) {
                 m_view->upload(m_pixels, first, last);
                 // Reinhard's and Ward's statistics change with the pixels; the others need none.
                 m_tone_dirty = m_tone_dirty || m_tone.op == ToneChoice::reinhard || m_tone.op == ToneChoice::ward;
@@ -127,6 +139,15 @@ public:
             if (!m_screenshot.empty() ||
                 (m_options.screenshot_passes && m_passes_shown >= *m_options.screenshot_passes))
                 m_last_tone_time = {};
+            // A window with nothing new is not drawn again: Mesa's software rasteriser would take a core from the
+            // renderer for an unchanged picture.
+            const WorkerStatus status = m_worker.status();
+            m_idle = first >= last && !status.rendering && !status.loading && m_screenshot.empty() &&
+                     !m_options.screenshot_passes && commands.empty() &&
+                     frame_start - m_last_input > std::chrono::milliseconds(500) &&
+                     frame_start - m_last_draw < std::chrono::seconds(1);
+            if (m_idle) continue;
+            m_last_draw = frame_start;
             draw_frame();
             if (!m_screenshot.empty()) {
                 save_screenshot(m_screenshot);
@@ -638,12 +659,31 @@ private:
     std::string m_error, m_last_rect;
     std::filesystem::path m_screenshot;
     bool m_blocked = false, m_quit = false;
+    bool m_idle = false;
+    std::chrono::steady_clock::time_point m_last_input, m_last_draw;
     std::optional<int> m_exit_status;
     double m_fps = 0.0, m_frame_ms = 0.0, m_frame_max_ms = 0.0;  // over the last second
     char m_path[512] = "view.png";
 };
 
 std::string g_glfw_error;
+
+void note_input(GLFWwindow* window) {
+    (void)window;
+    g_input = true;
+}
+
+void install_input_callbacks(GLFWwindow* window) {
+    glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { note_input(w); });
+    glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { note_input(w); });
+    glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { note_input(w); });
+    glfwSetKeyCallback(window, [](GLFWwindow* w, int, int, int, int) { note_input(w); });
+    glfwSetCharCallback(window, [](GLFWwindow* w, unsigned) { note_input(w); });
+    glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { note_input(w); });
+    glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { note_input(w); });
+    glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { note_input(w); });
+    glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { note_input(w); });
+}
 
 }  // namespace
 
@@ -695,6 +735,7 @@ int run_viewer(const app::ViewOptions& options, const char* argv0) {
     ImGui::GetStyle().ScaleAllSizes(sx);
     ImGui::GetIO().FontGlobalScale = sx;
     ImGui::StyleColorsDark();
+    install_input_callbacks(window);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -705,7 +746,10 @@ int run_viewer(const app::ViewOptions& options, const char* argv0) {
             int n = 0;
             for (std::string line; std::getline(std::cin, line);) {
                 try {
-                    if (auto c = parse_command(line, "stdin:" + std::to_string(++n))) commands.push(*c);
+                    if (auto c = parse_command(line, "stdin:" + std::to_string(++n))) {
+                        commands.push(*c);
+                        glfwPostEmptyEvent();  // wakes an idle window at once
+                    }
                 } catch (const Error& e) {
                     say(std::string("error: ") + e.what());
                 }
