@@ -209,8 +209,14 @@ private:
         m_image_width = scene->job.camera->width();
         m_image_height = scene->job.camera->height();
         if (!reload) {
-            if (!m_options.exposure) m_tone.op = ToneChoice::none;
             parse_tone_choice(scene->tone_name, m_tone.op);
+            // The file's samples per pixel when it samples more than once per pixel; else the viewer's default.
+            const RenderSettings& file = scene->job.settings;
+            if (!m_options.common.spp && !m_options.screenshot_passes && file.pattern != PixelPattern::none &&
+                file.pattern != PixelPattern::adaptive && file.spp > 1) {
+                m_choice.spp = file.spp;
+                m_worker.set_choice(m_choice);
+            }
             fit_window();
         }
         m_request = m_worker.set_camera(m_camera.changed() ? m_camera.make(m_scene_camera) : nullptr);
