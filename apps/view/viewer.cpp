@@ -155,9 +155,14 @@ public:
                 commands.pop();
                 m_blocked = false;
             }
-            if (m_options.screenshot_passes && m_passes_shown >= *m_options.screenshot_passes && frame_ready()) {
-                save_screenshot(m_options.screenshot_file);
-                return app::kExitDone;
+            if (m_options.screenshot_passes && m_passes_shown >= *m_options.screenshot_passes) {
+                // The window asked for its size when the scene loaded; a window manager that refuses it must not
+                // hold the run forever: after two seconds the window is saved as it is.
+                if (m_passes_done_at == Clock::time_point{}) m_passes_done_at = frame_start;
+                if (frame_ready() || frame_start - m_passes_done_at > std::chrono::seconds(2)) {
+                    save_screenshot(m_options.screenshot_file);
+                    return app::kExitDone;
+                }
             }
             glfwSwapBuffers(m_window);
             ++frames;
@@ -666,6 +671,7 @@ private:
     std::filesystem::path m_screenshot;
     bool m_blocked = false, m_quit = false;
     bool m_idle = false;
+    std::chrono::steady_clock::time_point m_passes_done_at;  // screenshot run: when the last pass came
     std::chrono::steady_clock::time_point m_last_input, m_last_draw;
     std::optional<int> m_exit_status;
     double m_fps = 0.0, m_frame_ms = 0.0, m_frame_max_ms = 0.0;  // over the last second
