@@ -11,6 +11,8 @@ std::optional<int> parse_view_options(int argc, char** argv, ViewOptions& o) {
     std::string scene, script;
     cli.add_positional("scene", scene, "the scene file (.json)");
     cli.add_common(o.common, make_tone_registry().names());
+    // Two values after one flag (the form the project's checks use): CLI11 directly, checked below as the layer's
+    // typed helpers check theirs.
     std::vector<std::string> shot;
     cli.app()
         .add_option("--screenshot-after-passes", shot,

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -32,26 +33,42 @@ public:
     void on_scheduler_entry(bool /*is_worker*/) override { lower_this_thread(); }
 };
 
-/// The radiance source of an integrator name, with whatever it owns.
+/// A radiance source and whatever it renders through (the integrator object it wraps).
 struct Integrator {
-    std::unique_ptr<WhittedIntegrator> whitted;
+    std::shared_ptr<const void> owner;
     std::unique_ptr<RadianceSource> source;
 };
 
+/// The integrators the viewer offers, by name: a new one (direct lighting, path tracing) is one more entry.
+struct IntegratorEntry {
+    std::string name;
+    std::function<Integrator(const RenderJob&)> make;
+};
+
+const std::vector<IntegratorEntry>& integrators() {
+    static const std::vector<IntegratorEntry> list{{"whitted", [](const RenderJob& job) {
+                                                        auto whitted = std::make_shared<const WhittedIntegrator>(
+                                                            *job.scene, job.lights, job.whitted);
+                                                        auto source = std::make_unique<WhittedRadiance>(*whitted);
+                                                        return Integrator{std::move(whitted), std::move(source)};
+                                                    }}};
+    return list;
+}
+
 Integrator make_integrator(const std::string& name, const RenderJob& job) {
-    Integrator i;
-    if (name == "whitted") {
-        i.whitted = std::make_unique<WhittedIntegrator>(*job.scene, job.lights, job.whitted);
-        i.source = std::make_unique<WhittedRadiance>(*i.whitted);
-        return i;
-    }
+    for (const auto& entry : integrators())
+        if (entry.name == name) return entry.make(job);
     throw Error("viewer: unknown integrator '" + name + "'");
 }
 
 }  // namespace
 
 const std::vector<std::string>& integrator_names() {
-    static const std::vector<std::string> names{"whitted"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> out;
+        for (const auto& entry : integrators()) out.push_back(entry.name);
+        return out;
+    }();
     return names;
 }
 
