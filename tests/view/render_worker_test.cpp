@@ -24,14 +24,18 @@ SceneLoadOptions small_whitted() {
 
 const std::filesystem::path kScene = std::filesystem::path(RTLAB_SOURCE_DIR) / "scenes" / "whitted.json";
 
-/// Collects events until one of `kind` with `request` (0: any) came, or a minute passed (a hung worker fails
-/// the test rather than hanging it).
+/// Collects events until one of `kind` with `request` (0: any) came, an unexpected error came, or a minute
+/// passed (a hung worker fails the test rather than hanging it).
 bool wait_for(RenderWorker& worker, WorkerEvent::Kind kind, int pass, std::uint64_t request,
               std::vector<WorkerEvent>* seen = nullptr) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
     while (std::chrono::steady_clock::now() < deadline) {
         for (const WorkerEvent& e : worker.take_events()) {
             if (seen) seen->push_back(e);
+            if (e.kind == WorkerEvent::Kind::error && kind != WorkerEvent::Kind::error) {
+                UNSCOPED_INFO(e.message);  // fail now, saying why, rather than after a minute
+                return false;
+            }
             if (e.kind == kind && e.pass == pass && (request == 0 || e.request == request)) return true;
         }
         std::this_thread::yield();
@@ -107,5 +111,26 @@ TEST_CASE("a broken scene is reported and the last image stays", "[view]") {
     const auto rows = worker.take_pixels(after);
     CHECK(rows.first == rows.second);
     CHECK(worker.scene() != nullptr);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the worker watches the scene file and the files it names", "[view]") {
+    const auto dir = std::filesystem::temp_directory_path() / ("rtlab_view_assets_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    write_image(Image(4, 4, RGB(0.2f, 0.4f, 0.6f)), dir / "wall.png");
+    const auto file = dir / "scene.json";
+    std::ofstream(file) << R"({"version": 1, "camera": {}, "render": {"width": 8, "height": 8},
+        "textures": [{"name": "wall", "type": "image", "filename": "wall.png"}],
+        "materials": [{"name": "m", "type": "phong", "kd": "wall"}],
+        "shapes": [{"type": "sphere", "center": [0, 0, -3], "material": "m"}]})";
+    RenderWorker worker(file, small_whitted());
+    RenderChoice choice;
+    choice.spp = 1;
+    worker.set_choice(choice);
+    REQUIRE(wait_for(worker, WorkerEvent::Kind::pass, 1, 0));
+    const auto files = worker.watched_files();
+    REQUIRE(files.size() == 2);
+    CHECK(files[0] == file);
+    CHECK(std::filesystem::equivalent(files[1], dir / "wall.png"));
     std::filesystem::remove_all(dir);
 }
