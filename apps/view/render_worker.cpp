@@ -4,8 +4,6 @@
 #include <rtlab/render/progressive.hpp>
 #include <rtlab/render/render_job.hpp>
 
-#include <tbb/task_scheduler_observer.h>
-
 #include <algorithm>
 #include <chrono>
 #include <functional>
@@ -24,14 +22,6 @@ void lower_this_thread() {
     const auto tid = static_cast<id_t>(syscall(SYS_gettid));
     setpriority(PRIO_PROCESS, tid, 10);
 }
-
-/// Lowers every TBB worker as it joins an arena: the viewer's process uses TBB for rendering and loading only.
-class LowPriorityWorkers : public tbb::task_scheduler_observer {
-public:
-    LowPriorityWorkers() { observe(true); }
-    ~LowPriorityWorkers() override { observe(false); }
-    void on_scheduler_entry(bool /*is_worker*/) override { lower_this_thread(); }
-};
 
 /// A radiance source and whatever it renders through (the integrator object it wraps).
 struct Integrator {
@@ -185,7 +175,6 @@ void RenderWorker::load() {
 
 void RenderWorker::run() {
     lower_this_thread();
-    LowPriorityWorkers observer;
     for (;;) {
         std::shared_ptr<const LoadedScene> scene;
         std::shared_ptr<const Camera> camera;
@@ -246,6 +235,10 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
         // Each finished tile is copied out at once: the window shows tiles as they finish.
         bool first_tile = true;
         callbacks.tile = [&](const TileUpdate& t) {
+            // The worker that rendered the tile (one of TBB's) gets a lower priority too: nice is per thread and
+            // stays, so from its second tile on it renders below the window. (A tbb::task_scheduler_observer would
+            // catch the first tile as well, but removing one leaks its record in oneTBB 2021.8.)
+            lower_this_thread();
             std::lock_guard lock(m_mutex);
             if (first_tile && m_request == request)
                 m_status.restart_ms =
