@@ -90,6 +90,16 @@ TEST_CASE("focus distance 0 focuses on look_at", "[camera]") {
     }
 }
 
+TEST_CASE("a thin lens gives back its aperture and focus distance", "[camera]") {
+    // What a program needs to make the same lens again at another position (rtlab-view's orbit).
+    const ThinLensCamera lens(kSpec, {.aperture = 0.25f, .focus_distance = 3.0f});
+    CHECK(lens.aperture() == 0.25f);
+    CHECK(lens.focus_distance() == 3.0f);
+    const ThinLensCamera again(kSpec, {.aperture = lens.aperture(), .focus_distance = lens.focus_distance()});
+    CHECK(again.generate_ray({10.0f, 20.0f}, {0.3f, 0.7f}).origin ==
+          lens.generate_ray({10.0f, 20.0f}, {0.3f, 0.7f}).origin);
+}
+
 TEST_CASE("concentric disc map stays in the unit disc and covers it evenly", "[camera]") {
     int quadrant[4] = {0, 0, 0, 0};
     int inner = 0;

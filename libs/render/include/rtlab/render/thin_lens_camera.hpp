@@ -27,6 +27,8 @@ public:
     const PinholeCamera& pinhole() const { return m_pinhole; }
     /// The focus distance in use (look_at's depth when the spec said 0).
     float focus_distance() const { return m_focus_distance; }
+    /// The lens diameter (LensSpec::aperture).
+    float aperture() const { return 2.0f * m_lens_radius; }
 
 private:
     PinholeCamera m_pinhole;
