@@ -37,6 +37,7 @@ void replace_front(std::span<PointNeighbor> heap, const PointNeighbor& x) {
 }  // namespace
 
 PointKdTree::PointKdTree(std::span<const Point3> points, int threads) {
+    static_assert(sizeof(Node) == 16, "a point and its index: four nodes per cache line");
     if (points.size() > kMaxPoints)
         throw Error("point kd-tree: " + std::to_string(points.size()) + " points; at most 2^30 - 1 are supported");
     m_nodes.resize(points.size());
