@@ -38,7 +38,7 @@ struct IntegratorEntry {
 const std::vector<IntegratorEntry>& integrators() {
     static const std::vector<IntegratorEntry> list{{"whitted", [](const RenderJob& job) {
                                                         auto whitted = std::make_shared<const WhittedIntegrator>(
-                                                            *job.scene, job.lights, job.whitted);
+                                                            *job.scene, job.lights, whitted_options(job));
                                                         auto source = std::make_unique<WhittedRadiance>(*whitted);
                                                         return Integrator{std::move(whitted), std::move(source)};
                                                     }}};
