@@ -96,6 +96,36 @@ TEST_CASE("an envmap is the background of the whitted integrator too", "[scene]"
     CHECK(image.at(4, 4).b == Approx(100.0f).epsilon(1e-3));
 }
 
+TEST_CASE("a scene's cube map envmap reads six faces or one cross, each face where core's convention puts it",
+          "[scene]") {
+    // Face f is grey f + 1: the map seen along each axis gives the number of the face there.
+    const fs::path dir = fs::temp_directory_path() / "rtlab_test_environment_cube";
+    fs::create_directories(dir);
+    const char* names[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+    const int cell[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}};  // the horizontal cross
+    Image cross(16, 12);
+    for (int f = 0; f < 6; ++f) {
+        write_pfm(Image(4, 4, RGB(float(f + 1))), dir / (std::string(names[f]) + ".pfm"));
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) cross.at(4 * cell[f][0] + x, 4 * cell[f][1] + y) = RGB(float(f + 1));
+    }
+    write_pfm(cross, dir / "cross.pfm");
+    SceneLoadOptions options;
+    options.data_dirs = {dir};
+    options.use_environment = false;
+    const Vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (const std::string& env :
+         {std::string(R"({"type": "envmap", "px": "px.pfm", "nx": "nx.pfm", "py": "py.pfm", "ny": "ny.pfm",
+                          "pz": "pz.pfm", "nz": "nz.pfm"})"),
+          std::string(R"({"type": "envmap", "cross": "cross.pfm"})")}) {
+        const LoadedScene s = parse_scene(sphere_scene(env, "path"), "t.json", options);
+        const auto* map = dynamic_cast<const EnvironmentMap*>(s.job.environment.get());
+        REQUIRE(map);
+        CHECK(map->is_cube());
+        for (int f = 0; f < 6; ++f) CHECK(map->radiance(axes[f]).g == Approx(f + 1.0f));
+    }
+}
+
 TEST_CASE("a studio map of blender-data is found by its logical name with its credit", "[scene]") {
     SceneLoadOptions options;
     options.use_environment = false;
