@@ -73,9 +73,10 @@ int run(const rtlab::app::RenderOptions& options, const char* argv0) {
             settings.pattern == rtlab::PixelPattern::adaptive
                 ? fmt::format("depth {} threshold {}", settings.adaptive.max_depth, settings.adaptive.threshold)
                 : fmt::format("spp {}", settings.spp);
-        fmt::print("{}: {}x{}, {} objects ({}), {} lights, aa {} {}\n", options.scene.string(), result.image.width(),
+        fmt::print("{}: {}x{}, {} objects ({}), {} lights{}, aa {} {}\n", options.scene.string(), result.image.width(),
                    result.image.height(), scene.job.scene->object_count(), scene.job.scene->structure(),
-                   scene.job.lights.size(), rtlab::pixel_pattern_name(settings.pattern), sampling);
+                   scene.job.lights.size(), scene.job.environment ? " and an environment" : "",
+                   rtlab::pixel_pattern_name(settings.pattern), sampling);
         fmt::print("rays: {} camera, {} shadow, {} reflected, {} refracted; {} total in {:.3f} s, {:.3g} rays/s\n",
                    s.rays.camera, s.rays.shadow, s.rays.reflected, s.rays.refracted, s.rays.total(), s.seconds,
                    s.rays_per_second());

@@ -3,7 +3,6 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/render/progressive.hpp>
 #include <rtlab/render/render_job.hpp>
-#include <rtlab/render/sampled_lights.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -24,64 +23,15 @@ void lower_this_thread() {
     setpriority(PRIO_PROCESS, tid, 10);
 }
 
-/// A radiance source and whatever it renders through (the integrator object it wraps).
-struct Integrator {
-    std::shared_ptr<const void> owner;
-    std::unique_ptr<RadianceSource> source;
-};
-
-/// The integrators the viewer offers, by name: a new one (direct lighting, path tracing) is one more entry.
-struct IntegratorEntry {
-    std::string name;
-    std::function<Integrator(const RenderJob&)> make;
-};
-
-/// direct and path over the scene's sampled lights (emitting shapes, area lights as quads, the background as an
-/// environment), which the integrator refers to: one object owns both.
-struct SampledIntegrator {
-    SampledIntegrator(const RenderJob& job)
-        : sampled(make_sampled_lights(job.scene, job.lights, job.whitted)),
-          integrator(*sampled.scene, sampled.lights, path_options(job)) {}
-    static PathOptions path_options(const RenderJob& job) {
-        PathOptions options = job.path;
-        if (!options.environment) options.environment = job.whitted.environment;
-        return options;
-    }
-    SampledLights sampled;
-    PathIntegrator integrator;
-};
-
-Integrator make_sampled(const RenderJob& job, IntegratorKind kind) {
-    auto owner = std::make_shared<const SampledIntegrator>(job);
-    auto source = std::make_unique<PathRadiance>(owner->integrator, kind);
-    return Integrator{std::move(owner), std::move(source)};
-}
-
-const std::vector<IntegratorEntry>& integrators() {
-    static const std::vector<IntegratorEntry> list{
-        {"whitted",
-         [](const RenderJob& job) {
-             auto whitted = std::make_shared<const WhittedIntegrator>(*job.scene, job.lights, job.whitted);
-             auto source = std::make_unique<WhittedRadiance>(*whitted);
-             return Integrator{std::move(whitted), std::move(source)};
-         }},
-        {"direct", [](const RenderJob& job) { return make_sampled(job, IntegratorKind::direct); }},
-        {"path", [](const RenderJob& job) { return make_sampled(job, IntegratorKind::path); }}};
-    return list;
-}
-
-Integrator make_integrator(const std::string& name, const RenderJob& job) {
-    for (const auto& entry : integrators())
-        if (entry.name == name) return entry.make(job);
-    throw Error("viewer: unknown integrator '" + name + "'");
-}
+/// The integrators the viewer offers, by name (rtlab::integrator_name's words).
+constexpr IntegratorKind kIntegrators[] = {IntegratorKind::whitted, IntegratorKind::direct, IntegratorKind::path};
 
 }  // namespace
 
 const std::vector<std::string>& integrator_names() {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> out;
-        for (const auto& entry : integrators()) out.push_back(entry.name);
+        for (const IntegratorKind kind : kIntegrators) out.emplace_back(integrator_name(kind));
         return out;
     }();
     return names;
@@ -240,10 +190,12 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
     const int width = camera->width(), height = camera->height();
     try {
         // No choice yet: the integrator the scene file names, as rtlab-render would use.
-        const std::string integrator_name =
-            choice.integrator.empty() ? std::string(rtlab::integrator_name(scene->job.integrator)) : choice.integrator;
-        const Integrator integrator = make_integrator(integrator_name, scene->job);
-        ProgressiveRenderer renderer(*camera, *integrator.source, settings);
+        const std::string integrator =
+            choice.integrator.empty() ? std::string(integrator_name(scene->job.integrator)) : choice.integrator;
+        const auto kind = parse_integrator(integrator);
+        if (!kind) throw Error("viewer: unknown integrator '" + integrator + "'");
+        const auto source = make_radiance_source(scene->job, *kind);
+        ProgressiveRenderer renderer(*camera, *source, settings);
         renderer.plan_passes(choice.spp);
         {
             std::lock_guard lock(m_mutex);
@@ -253,7 +205,7 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
                                           std::vector<std::uint32_t>(n)};
             }
             m_status.rendering = true;
-            m_status.integrator = integrator_name;
+            m_status.integrator = integrator;
             m_status.passes_done = 0;
             m_status.spp = choice.spp;
             m_status.seconds = 0.0;

@@ -275,6 +275,55 @@ struct ChiSquareResult {
     std::string worst;          // the bin that adds most to the statistic, for the report
 };
 
+/// \brief The chi-square goodness of fit of histogram counts against their expected counts: a bin with draws
+/// where (nearly) none are expected fails outright (p 0, `failure` names it by `name`); bins expected below 5 are
+/// pooled, and a pool still below 5 joins the smallest other bin.
+inline ChiSquareResult chi_square_counts(const std::vector<double>& observed, const std::vector<double>& expected,
+                                         const std::function<std::string(int)>& name) {
+    ChiSquareResult result;
+    const int count = static_cast<int>(observed.size());
+    // A draw where the density integrates to (nearly) nothing: the sampler and pdf disagree outright.
+    for (int b = 0; b < count; ++b)
+        if (observed[b] > 0.0 && expected[b] < 1e-4) {
+            result.failure =
+                name(b) + ": " + std::to_string(observed[b]) + " draws, " + std::to_string(expected[b]) + " expected";
+            result.p_value = 0.0;
+            return result;
+        }
+    std::vector<std::pair<double, double>> bins;  // (observed, expected)
+    double pool_o = 0.0, pool_e = 0.0, worst = 0.0;
+    for (int b = 0; b < count; ++b) {
+        if (expected[b] >= 5.0) {
+            const double term = (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
+            if (term > worst) {
+                worst = term;
+                result.worst =
+                    name(b) + ": observed " + std::to_string(observed[b]) + " expected " + std::to_string(expected[b]);
+            }
+            bins.emplace_back(observed[b], expected[b]);
+        } else {
+            pool_o += observed[b];
+            pool_e += expected[b];
+        }
+    }
+    if (pool_e >= 5.0) {
+        bins.emplace_back(pool_o, pool_e);
+    } else if (pool_e > 0.0 || pool_o > 0.0) {
+        if (bins.empty()) {
+            bins.emplace_back(pool_o, pool_e);
+        } else {
+            auto smallest = std::min_element(bins.begin(), bins.end(),
+                                             [](const auto& x, const auto& y) { return x.second < y.second; });
+            smallest->first += pool_o;
+            smallest->second += pool_e;
+        }
+    }
+    for (const auto& [o, e] : bins) result.statistic += (o - e) * (o - e) / e;
+    result.dof = static_cast<int>(bins.size()) - 1;
+    result.p_value = result.dof > 0 ? chi_square_survival(result.statistic, result.dof) : 1.0;
+    return result;
+}
+
 /// \brief Draws n directions from `sample` (nullopt: lost, or a delta lobe the density does not cover),
 /// histograms them on an n_c x n_phi grid of (cos theta in [-1, 1], phi in [0, 2 pi)), and compares with the
 /// expected counts n * (integral of pdf over each cell); the draws outside the density get one more bin,
@@ -313,52 +362,15 @@ inline ChiSquareResult chi_square_test(const std::function<std::optional<Vec3>(R
     result.pdf_integral = total;
     expected[cells] = std::max(0.0, 1.0 - total) * n;
 
-    // A draw where the density integrates to (nearly) nothing: the sampler and pdf disagree outright.
-    for (int b = 0; b <= cells; ++b)
-        if (observed[b] > 0.0 && expected[b] < 1e-4) {
-            result.failure = b == cells ? std::string("lost or delta draws")
-                                        : "cell c " + std::to_string(b / n_phi) + " phi " + std::to_string(b % n_phi);
-            result.failure +=
-                ": " + std::to_string(observed[b]) + " draws, " + std::to_string(expected[b]) + " expected";
-            result.p_value = 0.0;
-            return result;
-        }
-
-    std::vector<std::pair<double, double>> bins;  // (observed, expected)
-    double pool_o = 0.0, pool_e = 0.0, worst = 0.0;
-    for (int b = 0; b <= cells; ++b) {
-        if (expected[b] >= 5.0) {
-            const double term = (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
-            if (term > worst) {
-                worst = term;
-                result.worst =
-                    (b == cells ? std::string("outside")
-                                : "cell c " + std::to_string(b / n_phi) + " phi " + std::to_string(b % n_phi)) +
-                    ": observed " + std::to_string(observed[b]) + " expected " + std::to_string(expected[b]);
-            }
-        }
-        if (expected[b] < 5.0) {
-            pool_o += observed[b];
-            pool_e += expected[b];
-        } else {
-            bins.emplace_back(observed[b], expected[b]);
-        }
-    }
-    if (pool_e >= 5.0) {
-        bins.emplace_back(pool_o, pool_e);
-    } else if (pool_e > 0.0 || pool_o > 0.0) {
-        if (bins.empty()) {
-            bins.emplace_back(pool_o, pool_e);
-        } else {
-            auto smallest = std::min_element(bins.begin(), bins.end(),
-                                             [](const auto& x, const auto& y) { return x.second < y.second; });
-            smallest->first += pool_o;
-            smallest->second += pool_e;
-        }
-    }
-    for (const auto& [o, e] : bins) result.statistic += (o - e) * (o - e) / e;
-    result.dof = static_cast<int>(bins.size()) - 1;
-    result.p_value = result.dof > 0 ? chi_square_survival(result.statistic, result.dof) : 1.0;
+    const ChiSquareResult counted = chi_square_counts(observed, expected, [&](int b) {
+        return b == cells ? std::string("outside")
+                          : "cell c " + std::to_string(b / n_phi) + " phi " + std::to_string(b % n_phi);
+    });
+    result.statistic = counted.statistic;
+    result.dof = counted.dof;
+    result.p_value = counted.p_value;
+    result.failure = counted.failure;
+    result.worst = counted.worst;
     return result;
 }
 

@@ -96,9 +96,10 @@ RGB PathIntegrator::arrived(const Ray& ray, bool found, const Vertex& v, const P
         }
         const LightSet::Entry* env = m_lights.environment();
         if (!env) return {};
-        const RGB& le = m_lights.environment_emitter()->radiance();
-        if (specular) return le;
-        const float light_pdf = env->probability * env->emitter->pdf_li(from, ray.direction, from, v.outward);
+        const RGB le = m_lights.environment_emitter()->radiance(ray.direction);
+        if (specular || le.is_black()) return le;
+        const Vec3 wi = glm::normalize(ray.direction);
+        const float light_pdf = env->probability * env->emitter->pdf_li(from, wi, from, v.outward);
         return le * power_heuristic(bsdf_pdf, light_pdf);
     }
     const RGB& le = v.terms.emission;

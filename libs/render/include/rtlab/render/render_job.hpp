@@ -23,6 +23,10 @@ struct RenderJob {
     /// background (a uniform environment light) or environment (looked up, not sampled) and the convention
     /// (physical only).
     IntegratorKind integrator = IntegratorKind::whitted;
+    /// An environment light (an EnvironmentMap, say), instead of whitted's background and environment: what rays
+    /// that escape see under every integrator, and a light that direct and path sample (with multiple importance
+    /// sampling). Its power is set for the scene's size when the render starts (for_scene_radius).
+    std::shared_ptr<const EnvironmentEmitter> environment;
     PathOptions path;
     RenderSettings settings;  ///< pattern, spp, adaptive, seed, threads
 };
@@ -62,9 +66,19 @@ private:
     IntegratorKind m_kind;
 };
 
+/// The job's Whitted options with its environment light, if any, as the environment looked up by escaping rays
+/// (what the whitted integrator of render_job and of the viewer use).
+WhittedOptions whitted_options(const RenderJob& job);
+
+/// The radiance source of `kind` for a job, owning the integrator it calls and whatever that refers to (for direct
+/// and path, the sampled lights and the scene with the area lights' quads): what render_job renders with, for a
+/// program that renders a job its own way (progressively, in the viewer). Throws rtlab::Error as render_job does
+/// for the job's contents.
+std::shared_ptr<const RadianceSource> make_radiance_source(const RenderJob& job, IntegratorKind kind);
+
 /// Renders a job: RenderResult::stats counts camera, shadow, reflected and refracted rays, and its image is
 /// the same for any settings.threads. Throws rtlab::Error for a job without camera or scene, a null light,
-/// or bad settings (see render()).
+/// an environment light beside whitted's background or environment, or bad settings (see render()).
 RenderResult render_job(const RenderJob& job, const RenderCallbacks& callbacks = {});
 
 }  // namespace rtlab

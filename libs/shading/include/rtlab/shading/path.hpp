@@ -31,7 +31,8 @@ struct PathOptions {
     float max_survival = 0.95f;
     int max_crossings = 64;  ///< cut-outs (opacity < 1) a shadow ray crosses at most
     /// Looked up with the direction for rays that escape, without light sampling (BSDF sampling alone finds
-    /// it, so it stays unbiased); a uniform environment is instead a light of the LightSet.
+    /// it, so it stays unbiased); an environment light (uniform or a map) is instead the LightSet's environment,
+    /// sampled and weighed by MIS.
     std::shared_ptr<const Texture> environment;
 };
 
