@@ -1,10 +1,14 @@
-// The statistics the sampled-material tests rely on, against tabulated values.
+// The statistics the sampled-material tests rely on (rtlab::shading_testing), against tabulated values.
+#include <rtlab/shading_testing/sphere_quadrature.hpp>
+#include <rtlab/shading_testing/statistics.hpp>
+
 #include <catch2/catch.hpp>
 
-#include "sampling_stats.hpp"
+#include <cmath>
+#include <numbers>
 
 using namespace rtlab;
-using namespace rtlab::test;
+using namespace rtlab::shading_testing;
 
 TEST_CASE("the chi-square survival function matches tabulated quantiles", "[shading][statistics]") {
     // Upper 5% and 1% points of the chi-square distribution (any statistics table).
