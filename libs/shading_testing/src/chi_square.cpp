@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <utility>
 
 namespace rtlab::shading_testing {
@@ -23,8 +24,10 @@ void chi_square_from_counts(const std::vector<double>& observed, const std::vect
         const double term = (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
         if (term > worst) {
             worst = term;
-            result.worst = (names ? names(b) : "bin " + std::to_string(b)) + ": observed " +
-                           std::to_string(observed[b]) + " expected " + std::to_string(expected[b]);
+            std::ostringstream m;
+            m << (names ? names(b) : "bin " + std::to_string(b)) << ": observed " << observed[b] << " expected "
+              << expected[b];
+            result.worst = m.str();
         }
         bins.emplace_back(observed[b], expected[b]);
     }
@@ -87,8 +90,9 @@ ChiSquareResult chi_square_test(const std::function<std::optional<Vec3>(Rng&)>& 
     // A draw where the density integrates to (nearly) nothing: the sampler and pdf disagree outright.
     for (int b = 0; b <= cells; ++b)
         if (observed[b] > 0.0 && expected[b] < 1e-4) {
-            result.failure =
-                name(b) + ": " + std::to_string(observed[b]) + " draws, " + std::to_string(expected[b]) + " expected";
+            std::ostringstream m;
+            m << name(b) << ": " << observed[b] << " draws, " << expected[b] << " expected";
+            result.failure = m.str();
             result.p_value = 0.0;
             return result;
         }
