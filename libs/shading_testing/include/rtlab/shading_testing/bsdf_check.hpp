@@ -41,11 +41,12 @@ ConsistencyResult sample_consistency(const Material& material, const SurfaceTerm
                                      TransportMode mode, Rng& rng, int samples, double tolerance = 1e-3);
 
 /// The directional albedo for wo: the integral of eval(wo, wi) |cos(theta_i)| over the sphere (adaptive
-/// quadrature refined around lobe_hints and extra_hints, to `tolerance` in each of its 144 starting cells) plus the
-/// delta lobes' weights (sample() swept over a fine grid of uc: a delta lobe's value times its share of the grid is its
-/// weight). Of the largest channel at each direction: an upper bound of every channel's albedo, and each channel's own
-/// for a grey material. In importance mode it is the fraction of the light arriving from wo that leaves (at most 1 for
-/// a model that creates no energy); in radiance mode transmission adds the (n_wo / n_wi)^2 squeeze of solid angle.
+/// quadrature refined around lobe_hints and extra_hints, to `tolerance` in each of its 144 starting cells) plus
+/// the delta lobes' weights (sample() swept over a fine grid of uc: a delta lobe's value times its share of the
+/// grid is its weight). Of the largest channel at each direction: an upper bound of every channel's albedo, and
+/// each channel's own for a grey material. In importance mode it is the fraction of the light arriving from wo
+/// that leaves (at most 1 for a model that creates no energy); in radiance mode transmission adds the
+/// (n_wo / n_wi)^2 squeeze of solid angle.
 double directional_albedo(const Material& material, const SurfaceTerms& terms, const Vec3& wo, TransportMode mode,
                           const std::vector<Vec3>& extra_hints = {}, double tolerance = 1e-6);
 
