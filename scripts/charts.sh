@@ -2,7 +2,7 @@
 # Measures speed against accuracy (CSV and JSON lines in docs/data/) and draws the PNG charts in docs/charts/.
 # Each measurement writes docs/data/<name>.meta.json (machine, date, command, what the points are medians
 # of), which the charts print in their footers.
-#   scripts/charts.sh              the short benchmarks (about 3 minutes on 2 cores), then every chart
+#   scripts/charts.sh              the short benchmarks (about 4 minutes on 2 cores), then every chart
 #   scripts/charts.sh --accel      also re-measure the acceleration structures on the shared models (long)
 #   scripts/charts.sh --no-run     chart the data already in docs/data/
 # Needs the release build's benchmark programs (built here) and, for --accel, ../shared/models.
@@ -27,7 +27,7 @@ meta() {
 if [ "$run" = 1 ]; then
   cmake --preset release >/dev/null
   cmake --build build/release -j"${JOBS:-2}" --target rtlab_geometry_bench rtlab_shading_optics_tradeoff \
-    rtlab_render_aa_tradeoff rtlab_stability_tests $([ "$accel" = 1 ] && echo rtlab_app_accel)
+    rtlab_shading_microfacet_energy rtlab_render_aa_tradeoff rtlab_stability_tests $([ "$accel" = 1 ] && echo rtlab_app_accel)
   mkdir -p "$data"
   scripts/stability.sh >/dev/null  # docs/data/stability.jsonl: leak rates, fallbacks, offsets against scale
   meta stability "scripts/stability.sh (rtlab_stability_tests)" "counts, not timings: no medians"
@@ -39,6 +39,10 @@ if [ "$run" = 1 ]; then
   $bin/rtlab_shading_optics_tradeoff $data/optics_tradeoff.csv --runs 9
   meta optics_tradeoff "rtlab_shading_optics_tradeoff docs/data/optics_tradeoff.csv --runs 9" \
     "ns: median of 9 runs of 200 passes over 4096 inputs; errors by quadrature (200000 steps, double)"
+
+  $bin/rtlab_shading_microfacet_energy $data/microfacet_energy.csv 2>/dev/null
+  meta microfacet_energy "rtlab_shading_microfacet_energy docs/data/microfacet_energy.csv" \
+    "albedos by deterministic quadrature (adaptive, 1e-7 per starting cell): no timing, no medians"
 
   $bin/rtlab_render_aa_tradeoff $data/antialiasing.csv --runs 3 --width 160
   meta antialiasing "rtlab_render_aa_tradeoff docs/data/antialiasing.csv --runs 3 --width 160" \
@@ -66,3 +70,4 @@ if [ "$run" = 1 ]; then
 fi
 /usr/bin/python3 scripts/charts/accel_charts.py docs/charts $data/accel_*.csv
 /usr/bin/python3 scripts/charts/tradeoff_charts.py $data docs/charts
+/usr/bin/python3 scripts/charts/shading_charts.py $data docs/charts

@@ -8,13 +8,36 @@
 #include <rtlab/core/rng.hpp>
 #include <rtlab/shading/environment_map.hpp>
 
-#include "sampling_stats.hpp"
+#include <rtlab/shading_testing/chi_square.hpp>
+#include <rtlab/shading_testing/statistics.hpp>
+
+#include "sample_scale.hpp"
 
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace rtlab::test {
+
+using shading_testing::ChiSquareResult;
+using shading_testing::sidak_level;
+
+/// The chi-square of histogram counts against exact expected counts; a bin with draws where (nearly) none are
+/// expected fails outright (p 0, `failure` names it).
+inline ChiSquareResult chi_square_counts(const std::vector<double>& observed, const std::vector<double>& expected,
+                                         const std::function<std::string(int)>& name) {
+    ChiSquareResult result;
+    for (std::size_t b = 0; b < observed.size(); ++b)
+        if (observed[b] > 0.0 && expected[b] < 1e-4) {
+            result.failure = name(static_cast<int>(b)) + ": " + std::to_string(observed[b]) + " draws, " +
+                             std::to_string(expected[b]) + " expected";
+            result.p_value = 0.0;
+            return result;
+        }
+    shading_testing::chi_square_from_counts(observed, expected, result, name);
+    return result;
+}
 
 inline constexpr double kPiD = std::numbers::pi;
 
