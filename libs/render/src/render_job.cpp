@@ -1,27 +1,11 @@
-#include <rtlab/core/error.hpp>
+#include <rtlab/render/job_radiance.hpp>
 #include <rtlab/render/render_job.hpp>
-#include <rtlab/render/sampled_lights.hpp>
-
-#include <string>
 
 namespace rtlab {
 
 RenderResult render_job(const RenderJob& job, const RenderCallbacks& callbacks) {
-    if (!job.camera) throw Error("render job: no camera");
-    if (!job.scene) throw Error("render job: no scene");
-    for (std::size_t i = 0; i < job.lights.size(); ++i)
-        if (!job.lights[i]) throw Error("render job: light " + std::to_string(i) + " is null");
-    if (job.integrator == IntegratorKind::whitted) {
-        const WhittedIntegrator integrator(*job.scene, job.lights, job.whitted);
-        const WhittedRadiance source(integrator);
-        return render(*job.camera, source, job.settings, callbacks);
-    }
-    const SampledLights sampled = make_sampled_lights(job.scene, job.lights, job.whitted);
-    PathOptions options = job.path;
-    if (!options.environment) options.environment = job.whitted.environment;
-    const PathIntegrator integrator(*sampled.scene, sampled.lights, options);
-    const PathRadiance source(integrator, job.integrator);
-    return render(*job.camera, source, job.settings, callbacks);
+    const JobRadiance radiance(job);
+    return render(*job.camera, radiance.source(), job.settings, callbacks);
 }
 
 }  // namespace rtlab
