@@ -107,10 +107,10 @@ rtlab::RenderResult render_target(const rtlab::app::RenderOptions& options, cons
     const rtlab::JobRadiance radiance(scene.job);
     target = rtlab::render_to_target(*scene.job.camera, radiance.source(), p, t, callbacks);
     rtlab::RenderResult result;
-    result.image = target.image;
+    result.image = std::move(target.image);
     result.samples = target.buffer.counts();
     result.stats = target.stats;
-    result.buffer = std::make_shared<const rtlab::SampleBuffer>(target.buffer);
+    result.buffer = std::make_shared<const rtlab::SampleBuffer>(std::move(target.buffer));
     return result;
 }
 
@@ -193,8 +193,8 @@ int run(const rtlab::app::RenderOptions& options, const char* argv0) {
                    s.rays.camera, s.rays.shadow, s.rays.reflected, s.rays.refracted, s.rays.total(), s.seconds,
                    s.rays_per_second());
         if (to_target) {
-            const rtlab::SampleBuffer& b = target.buffer;
-            const std::vector<std::uint32_t> counts = b.counts();
+            const rtlab::SampleBuffer& b = *result.buffer;
+            const std::vector<std::uint32_t>& counts = result.samples;
             const auto [lo, hi] = std::minmax_element(counts.begin(), counts.end());
             fmt::print(
                 "target: {} after {} passes: estimated relMSE {:.4g}{}; samples {} ({:.4g} per pixel, {} to {}; "

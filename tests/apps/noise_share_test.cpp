@@ -185,6 +185,13 @@ TEST_CASE("noise targets and sample ranges are refused where they cannot hold wi
     usage(MERGE_EXE, "-o " + q(dir / "x.png"), "give the share files");
     usage(MERGE_EXE, q(dir / "x.rtshare") + " --variance -o " + q(dir / "x.png"), "--variance needs EXR output");
     usage(MERGE_EXE, q(dir / "x.rtshare") + " --spp 4 -o " + q(dir / "x.png"), "unknown option '--spp'");
+    // A time budget: how far it gets is never asserted (no timed tests), only that it ends well.
+    const auto timed = run_app(
+        RENDER_EXE, q(kCornell) + " --width 16 --height 16 --time 0.2 --spp 64 -o " + q(dir / "timed.pfm"), dir);
+    INFO(timed.out << timed.err);
+    CHECK(timed.status == 0);
+    CHECK((timed.out.find("time budget spent") != std::string::npos ||
+           timed.out.find("sample cap reached") != std::string::npos));
     // The Whitted integrator itself is allowed: each sample is an independent estimate of its anti-aliased image.
     const auto whitted = run_app(
         RENDER_EXE,
