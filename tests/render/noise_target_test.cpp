@@ -237,6 +237,10 @@ TEST_CASE("a render to a target stops at the cap or the time budget and refuses 
     CHECK_THROWS_WITH(render_to_target(camera, source, sobol, t), Catch::Contains("not independent"));
     CHECK_THROWS_WITH(render_to_target(camera, source, halves(64, 3), TargetSettings{}),
                       Catch::Contains("noise target or a time budget"));
+    ProgressiveRenderer renderer(camera, source, halves(8, 3));
+    CHECK_THROWS_WITH(renderer.render_to(std::vector<std::uint32_t>(53, 4)), Catch::Contains("53 sample ends for 54"));
+    CHECK(renderer.render_to(std::vector<std::uint32_t>(54, 0)));  // nothing to do is fine
+    CHECK(renderer.buffer().total_samples() == 0);
     CHECK(supports_noise_target(IntegratorKind::path));
     CHECK(supports_noise_target(IntegratorKind::direct));
     CHECK(supports_noise_target(IntegratorKind::whitted));
