@@ -1,4 +1,3 @@
-#include <rtlab/core/error.hpp>
 #include <rtlab/render/render_job.hpp>
 #include <rtlab/render/sampled_lights.hpp>
 
