@@ -10,8 +10,8 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/core/param_spec.hpp>
 #include <rtlab/render/image_output.hpp>
-#include <rtlab/render/render_job.hpp>
 #include <rtlab/render/noise_target.hpp>
+#include <rtlab/render/render_job.hpp>
 #include <rtlab/render/sample_share.hpp>
 #include <rtlab/scene/plugin.hpp>
 #include <rtlab/scene/scene_loader.hpp>
@@ -68,8 +68,7 @@ int render_share(const rtlab::app::RenderOptions& options, const rtlab::LoadedSc
     callbacks.progress = base.progress;
     callbacks.stop = base.stop;
     const auto radiance = rtlab::make_radiance_source(scene.job, scene.job.integrator);
-    const rtlab::ShareRenderResult r =
-        rtlab::render_share(*scene.job.camera, *radiance, p, hash, output, callbacks);
+    const rtlab::ShareRenderResult r = rtlab::render_share(*scene.job.camera, *radiance, p, hash, output, callbacks);
     const bool stopped = r.end < range.end;
     if (!options.common.quiet || stopped) {
         std::FILE* out = options.common.quiet ? stderr : stdout;
