@@ -105,36 +105,42 @@ median() {
 }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.3f", a / b}'; }
 
-# One Cycles run; prints "wall render". Arguments: scene WxH spp depth threads seed image [extra...].
+# CPU seconds (user + system) of a whole run, from GNU time's file.
+cpu_seconds() { awk '{printf "%.3f", $1 + $2}' "$1"; }
+
+# One Cycles run; prints "wall render cpu render_cpu" (cpu: user + system of the whole run; render_cpu: the
+# render phase's processor seconds). Arguments: scene WxH spp depth threads seed image [extra...].
 run_cycles() {
   local scene=$1 wh=$2 n=$3 d=$4 t=$5 seed=$6 image=$7
   shift 7
   local log=${image%.*}.log t0 t1
   t0=$(now)
-  "$blender" -b --factory-startup -P bench/peer/cycles/cornell_box.py -- "$(scene_file "$scene")" -o "$image" \
+  /usr/bin/time -o "$log.time" -f "%U %S" "$blender" -b --factory-startup -P bench/peer/cycles/cornell_box.py -- "$(scene_file "$scene")" -o "$image" \
     --size "$wh" --spp "$n" --depth "$d" --threads "$t" --seed "$seed" --data-dir "$shared" "$@" >"$log" 2>&1 ||
     { echo "peer-cycles: Cycles failed, see $log" >&2; exit 1; }
   t1=$(now)
-  local render
-  render=$(sed -n 's/^cycles: render phase \([0-9.]*\) s$/\1/p' "$log")
+  local render render_cpu
+  render=$(sed -n 's/^cycles: render phase \([0-9.]*\) s (\([0-9.]*\) CPU s)$/\1/p' "$log")
+  render_cpu=$(sed -n 's/^cycles: render phase \([0-9.]*\) s (\([0-9.]*\) CPU s)$/\2/p' "$log")
   [ -n "$render" ] || { echo "peer-cycles: no render phase in $log" >&2; exit 1; }
-  echo "$(elapsed "$t0" "$t1") $render"
+  echo "$(elapsed "$t0" "$t1") $render $(cpu_seconds "$log.time") $render_cpu"
 }
 
-# One rtlab run; prints "wall render" (render: the summary's "total in S s", the render without loading,
-# building the kd-trees or writing). Arguments: scene WxH spp depth threads seed image integrator.
+# One rtlab run; prints "wall render cpu" (render: the summary's "total in S s", the render without loading,
+# building the kd-trees or writing; cpu: user + system of the whole run). Arguments: scene WxH spp depth
+# threads seed image integrator.
 run_rtlab() {
   local scene=$1 wh=$2 n=$3 d=$4 t=$5 seed=$6 image=$7 integrator=$8
   local log=${image%.*}.log t0 t1
   t0=$(now)
-  "$bin/rtlab-render" "$(scene_file "$scene")" -o "$image" --width "${wh%x*}" --height "${wh#*x}" --spp "$n" \
+  /usr/bin/time -o "$log.time" -f "%U %S" "$bin/rtlab-render" "$(scene_file "$scene")" -o "$image" --width "${wh%x*}" --height "${wh#*x}" --spp "$n" \
     --depth "$d" --threads "$t" --seed "$seed" --integrator "$integrator" --data-dir "$shared" >"$log" 2>&1 ||
     { echo "peer-cycles: rtlab-render failed, see $log" >&2; exit 1; }
   t1=$(now)
   local render
   render=$(sed -n 's/.* total in \([0-9.]*\) s, .*/\1/p' "$log" | tail -1)
   [ -n "$render" ] || { echo "peer-cycles: no render time in $log" >&2; exit 1; }
-  echo "$(elapsed "$t0" "$t1") $render"
+  echo "$(elapsed "$t0" "$t1") $render $(cpu_seconds "$log.time")"
 }
 
 machine="$(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1), $(nproc) cores, $(uname -sr)"
@@ -162,26 +168,34 @@ done
 
 # --- 2. timing ----------------------------------------------------------------------------------------------
 printf '2. timing, %s, %s spp, depth %s, medians of %s:\n' "$size" "$spp" "$depth" "$repeat"
-printf '   %-6s %3s  %10s %10s  %10s %10s  %8s %8s\n' scene thr cy_render cy_wall rt_render rt_wall \
-  render_x wall_x
+printf '   %-6s %3s  %9s %9s  %9s %9s  %9s %9s  %9s %9s\n' scene thr cy_render cy_wall rt_render rt_wall \
+  cy_rend/rt cy_wall/rt cy_cpu rt_cpu
 for scene in $scenes_timed; do
   for threads in $threads_list; do
-    cr=() cw=() rr=() rw=()
+    cr=() cw=() cc=() crc=() rr=() rw=() rc=()
     for ((i = 0; i < repeat; ++i)); do
       res=$(run_cycles "$scene" "$size" "$spp" "$depth" "$threads" 0 "$out/time_${scene}_t${threads}_cycles.exr")
-      read -r w r <<<"$res"
-      cw+=("$w") cr+=("$r")
+      read -r w r c rcpu <<<"$res"
+      cw+=("$w") cr+=("$r") cc+=("$c") crc+=("$rcpu")
       res=$(run_rtlab "$scene" "$size" "$spp" "$depth" "$threads" 0 "$out/time_${scene}_t${threads}_rtlab.pfm" path)
-      read -r w r <<<"$res"
-      rw+=("$w") rr+=("$r")
+      read -r w r c <<<"$res"
+      rw+=("$w") rr+=("$r") rc+=("$c")
     done
     c_r=$(median "${cr[@]}") c_w=$(median "${cw[@]}") r_r=$(median "${rr[@]}") r_w=$(median "${rw[@]}")
-    printf '   %-6s %3s  %10s %10s  %10s %10s  %8s %8s\n' "$scene" "$threads" "$c_r" "$c_w" "$r_r" "$r_w" \
-      "$(ratio "$c_r" "$r_r")" "$(ratio "$c_w" "$r_w")"
+    c_c=$(median "${cc[@]}") c_rc=$(median "${crc[@]}") r_c=$(median "${rc[@]}")
+    printf '   %-6s %3s  %9s %9s  %9s %9s  %9s %9s  %9s %9s\n' "$scene" "$threads" "$c_r" "$c_w" "$r_r" "$r_w" \
+      "$(ratio "$c_r" "$r_w")" "$(ratio "$c_w" "$r_w")" "$c_rc" "$r_c"
     row timing "$scene" "$threads" "$size" "$spp" "$depth" cycles_render_s "$c_r"
     row timing "$scene" "$threads" "$size" "$spp" "$depth" cycles_wall_s "$c_w"
     row timing "$scene" "$threads" "$size" "$spp" "$depth" rtlab_render_s "$r_r"
     row timing "$scene" "$threads" "$size" "$spp" "$depth" rtlab_wall_s "$r_w"
+    row timing "$scene" "$threads" "$size" "$spp" "$depth" cycles_render_cpu_s "$c_rc"
+    row timing "$scene" "$threads" "$size" "$spp" "$depth" cycles_cpu_s "$c_c"
+    row timing "$scene" "$threads" "$size" "$spp" "$depth" rtlab_cpu_s "$r_c"
+    row timing "$scene" "$threads" "$size" "$spp" "$depth" samples_per_s_cycles_render \
+      "$(awk -v w="${size%x*}" -v h="${size#*x}" -v n="$spp" -v t="$c_r" 'BEGIN {printf "%.0f", w * h * n / t}')"
+    row timing "$scene" "$threads" "$size" "$spp" "$depth" samples_per_s_rtlab_render \
+      "$(awk -v w="${size%x*}" -v h="${size#*x}" -v n="$spp" -v t="$r_r" 'BEGIN {printf "%.0f", w * h * n / t}')"
     row timing "$scene" "$threads" "$size" "$spp" "$depth" cycles_render_over_rtlab_wall "$(ratio "$c_r" "$r_w")"
     row timing "$scene" "$threads" "$size" "$spp" "$depth" cycles_wall_over_rtlab_wall "$(ratio "$c_w" "$r_w")"
   done
@@ -192,12 +206,12 @@ echo "3. agreement of converged renders ($ref_size, $ref_spp spp, depth $depth, 
 for scene in box glossy ${scenes_timed#box}; do
   res=$(run_cycles "$scene" "$ref_size" "$ref_spp" "$depth" "$max_threads" 1 "$out/ref_${scene}_cycles.exr" \
     --pfm "$out/ref_${scene}_cycles.pfm")
-  read -r cw cr <<<"$res"
+  read -r cw cr _ <<<"$res"
   res=$(run_rtlab "$scene" "$ref_size" "$ref_spp" "$depth" "$max_threads" 1 "$out/ref_${scene}_rtlab.pfm" path)
-  read -r rw rr <<<"$res"
+  read -r rw rr _ <<<"$res"
   a=$($images agree "$out/ref_${scene}_rtlab.pfm" "$out/ref_${scene}_cycles.pfm" --blocks 8)
   echo "   $scene: $a (Cycles ${cr} s render, rtlab ${rr} s)"
-  for q in mean_rel max_rel channel_max_rel channel_mean_rel image_ratio; do
+  for q in mean_rel max_rel worst_block channel_max_rel channel_mean_rel dark_blocks dark_max_rel image_ratio; do
     row agreement "$scene" "$max_threads" "$ref_size" "$ref_spp" "$depth" "$q" "$(sed -n "s/.*$q=\([^ ]*\).*/\1/p" <<<"$a")"
   done
   for r in rtlab cycles; do $images png "$out/ref_${scene}_$r.pfm" "$out/ref_${scene}_$r.png"; done
@@ -205,11 +219,12 @@ done
 run_rtlab box "$ref_size" "$ref_spp" "$depth" "$max_threads" 1 "$out/ref_box_rtlab_direct.pfm" direct >/dev/null
 
 # --- 4. efficiency: RMSE against time -----------------------------------------------------------------------
-echo "scene,renderer,integrator,threads,width,height,spp,depth,render_s,wall_s,rmse,rel_rmse" >"$csv"
-ladder_row() {  # scene renderer integrator threads spp wall render image reference
-  local e
-  e=$($images rmse "$8" "$9")
-  echo "$1,$2,$3,$4,${ref_size%x*},${ref_size#*x},$5,$depth,$7,$6,$(sed -n 's/rmse=\([^ ]*\) rel_rmse=\([^ ]*\)/\1,\2/p' <<<"$e")" >>"$csv"
+echo "scene,renderer,integrator,threads,width,height,spp,depth,render_s,wall_s,render_cpu_s,cpu_s,rmse,rel_rmse" >"$csv"
+ladder_row() {  # scene renderer integrator threads spp "wall render cpu [render_cpu]" image reference
+  local e w r c rc
+  read -r w r c rc <<<"$6"
+  e=$($images rmse "$7" "$8")
+  echo "$1,$2,$3,$4,${ref_size%x*},${ref_size#*x},$5,$depth,$r,$w,${rc:-},$c,$(sed -n 's/rmse=\([^ ]*\) rel_rmse=\([^ ]*\)/\1,\2/p' <<<"$e")" >>"$csv"
 }
 echo "4. efficiency ladder at $ref_size, spp $ladder:"
 for scene in $scenes_timed; do
@@ -217,15 +232,12 @@ for scene in $scenes_timed; do
     for n in $ladder; do
       img=$out/ladder_${scene}_t${threads}_s${n}
       res=$(run_cycles "$scene" "$ref_size" "$n" "$depth" "$threads" 0 "${img}_cycles.exr" --pfm "${img}_cycles.pfm")
-      read -r w r <<<"$res"
-      ladder_row "$scene" cycles path "$threads" "$n" "$w" "$r" "${img}_cycles.pfm" "$out/ref_${scene}_cycles.pfm"
+      ladder_row "$scene" cycles path "$threads" "$n" "$res" "${img}_cycles.pfm" "$out/ref_${scene}_cycles.pfm"
       res=$(run_rtlab "$scene" "$ref_size" "$n" "$depth" "$threads" 0 "${img}_rtlab.pfm" path)
-      read -r w r <<<"$res"
-      ladder_row "$scene" rtlab path "$threads" "$n" "$w" "$r" "${img}_rtlab.pfm" "$out/ref_${scene}_rtlab.pfm"
+      ladder_row "$scene" rtlab path "$threads" "$n" "$res" "${img}_rtlab.pfm" "$out/ref_${scene}_rtlab.pfm"
       if [ "$scene" = box ]; then
         res=$(run_rtlab "$scene" "$ref_size" "$n" "$depth" "$threads" 0 "${img}_rtlab_direct.pfm" direct)
-        read -r w r <<<"$res"
-        ladder_row "$scene" rtlab direct "$threads" "$n" "$w" "$r" "${img}_rtlab_direct.pfm" "$out/ref_box_rtlab_direct.pfm"
+        ladder_row "$scene" rtlab direct "$threads" "$n" "$res" "${img}_rtlab_direct.pfm" "$out/ref_box_rtlab_direct.pfm"
       fi
     done
   done
@@ -234,8 +246,8 @@ $images efficiency "$csv" | tee "$out/efficiency.txt" | sed 's/^/   /'
 # "box threads=1 cycles_render geomean=0.5 last=0.4 levels=...": the summary keeps the geometric mean over the
 # RMSE levels both reached and the ratio at the lowest RMSE (least start-up in it).
 while read -r scene thr basis geo last _; do
-  row efficiency "$scene" "${thr#threads=}" "$ref_size" "$ladder" "$depth" "rtlab_wall_over_${basis}_geomean" "${geo#geomean=}"
-  row efficiency "$scene" "${thr#threads=}" "$ref_size" "$ladder" "$depth" "rtlab_wall_over_${basis}_lowest_rmse" "${last#last=}"
+  row efficiency "$scene" "${thr#threads=}" "$ref_size" "${ladder// /:}" "$depth" "${basis}_geomean" "${geo#geomean=}"
+  row efficiency "$scene" "${thr#threads=}" "$ref_size" "${ladder// /:}" "$depth" "${basis}_lowest_rmse" "${last#last=}"
 done < <(grep geomean= "$out/efficiency.txt")
 
 $python -c 'import json, sys; json.dump(dict(machine=sys.argv[2], date=sys.argv[3], command=sys.argv[4],

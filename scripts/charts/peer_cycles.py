@@ -2,7 +2,8 @@
 `path`, rtlab `direct` and Cycles, each render measured against its own renderer's converged render; one panel
 per scene and thread count. rtlab's points are its whole run; Cycles' are its render phase (filled) and its
 whole run (hollow, Blender's start included). The title of each panel gives rtlab's time to Cycles' RMSE over
-Cycles' render-phase time (geometric mean over the RMSE levels both reached; target <= 0.667).
+Cycles' render-phase time (geometric mean over the RMSE levels both reached; target <= 0.667), and the same in
+processor seconds (rtlab's whole run, Cycles' render phase), which a shared machine's load disturbs less.
 
 Usage: peer_cycles.py LADDER.csv SUMMARY.csv META.json OUT.png   (Debian's /usr/bin/python3)
 """
@@ -33,8 +34,12 @@ def main(argv):
         print(f"peer_cycles: {argv[1]} has no rows", file=sys.stderr)
         return 1
     panels = sorted({(r["scene"], int(r["threads"])) for r in ladder}, key=lambda p: (p[0] != "box", p))
-    efficiency = {(r["scene"], int(r["threads"])): float(r["value"]) for r in summary
-                  if r["section"] == "efficiency" and r["quantity"] == "rtlab_wall_over_cycles_render_geomean"}
+    def efficiency_of(quantity):
+        return {(r["scene"], int(r["threads"])): float(r["value"]) for r in summary
+                if r["section"] == "efficiency" and r["quantity"] == quantity}
+
+    efficiency = efficiency_of("rtlab_wall_over_cycles_render_geomean")
+    efficiency_cpu = efficiency_of("rtlab_cpu_over_cycles_render_cpu_geomean")
     cols = len({t for _, t in panels})
     rows = (len(panels) + cols - 1) // cols
     fig, axes = plt.subplots(rows, cols, figsize=(5.2 * cols, 4.2 * rows + 0.6), squeeze=False)
@@ -59,7 +64,9 @@ def main(argv):
         r0 = next(r for r in ladder if r["scene"] == scene)
         title = f"{scene}, {r0['width']}x{r0['height']}, depth {r0['depth']}, {threads} thread{'s' * (threads > 1)}"
         if ratio is not None:
+            cpu = efficiency_cpu.get((scene, threads))
             title += f"\nrtlab time / Cycles time at equal RMSE: {ratio:.2f} (target <= 0.67)"
+            title += f"; processor s: {cpu:.2f}" if cpu is not None else ""
         ax.set_title(title, fontsize=9)
         ax.set_xlabel("seconds")
         ax.set_ylabel("RMSE against own converged render")

@@ -4,7 +4,8 @@ Blender script converts its EXR to one): Debian's python3 has no EXR reader. Run
     cycles_images.py png IN.pfm OUT.png              linear to sRGB 8-bit (clamped), for looking at
     cycles_images.py agree A.pfm B.pfm [--blocks N]  block means of two converged renders on an N x N grid
                                                      (default 8): relative differences of the blocks' mean
-                                                     luminance and of every channel
+                                                     luminance and of every channel (worst_block: x:y from
+                                                     the top left)
     cycles_images.py rmse IMG.pfm REF.pfm            RMSE over every pixel and channel, and relative to the
                                                      reference's mean
     cycles_images.py efficiency LADDER.csv           time to equal RMSE, rtlab against Cycles, from the ladder
@@ -62,17 +63,21 @@ def agree(a_path, b_path, n):
     if a.shape != b.shape:
         raise SystemExit(f"cycles_images: {a_path} is {a.shape[1]}x{a.shape[0]}, {b_path} {b.shape[1]}x{b.shape[0]}")
     ya, yb = block_means(luminance(a)[:, :, None], n)[:, :, 0], block_means(luminance(b)[:, :, None], n)[:, :, 0]
-    # Blocks darker than 2% of the image's mean (the black outside the box) are left out: their relative
-    # difference is noise over nothing.
-    lit = yb > 0.02 * yb.mean()
-    rel = np.abs(ya - yb)[lit] / yb[lit]
+    # The criterion takes the blocks at least 5% as bright as the mean block: in darker ones (deep shadow, the
+    # black outside the box) the relative difference is mostly noise over little light. dark_max_rel is the
+    # largest relative difference among the others that are not black (above 0.1% of the mean).
+    lit = yb >= 0.05 * yb.mean()
+    dark = (yb < 0.05 * yb.mean()) & (yb > 0.001 * yb.mean())
+    rel = np.abs(ya - yb) / np.maximum(yb, 1e-30)
     ca, cb = block_means(a, n), block_means(b, n)
-    channel_lit = cb > 0.02 * cb.mean(axis=(0, 1))
+    channel_lit = cb >= 0.05 * cb.mean(axis=(0, 1))
     channel_rel = np.abs(ca - cb)[channel_lit] / cb[channel_lit]
     ratio = ya.sum() / yb.sum()
-    print(f"blocks={int(lit.sum())} mean_rel={rel.mean():.5f} max_rel={rel.max():.5f} "
-          f"channel_max_rel={channel_rel.max():.5f} channel_mean_rel={channel_rel.mean():.5f} "
-          f"image_ratio={ratio:.5f}")
+    worst = np.unravel_index(np.argmax(np.where(lit, rel, -1.0)), rel.shape)
+    print(f"blocks={int(lit.sum())} mean_rel={rel[lit].mean():.5f} max_rel={rel[lit].max():.5f} "
+          f"worst_block={worst[1]}:{worst[0]} channel_max_rel={channel_rel.max():.5f} "
+          f"channel_mean_rel={channel_rel.mean():.5f} dark_blocks={int(dark.sum())} "
+          f"dark_max_rel={rel[dark].max() if dark.any() else 0.0:.5f} image_ratio={ratio:.5f}")
 
 
 def rmse(img_path, ref_path):
@@ -93,35 +98,43 @@ def time_at(points, target):
     return None
 
 
+# (rtlab's column, Cycles' column): rtlab's whole run against Cycles' render phase is the race's measure;
+# the others show what start-up and a shared machine's load (processor seconds) change.
+EFFICIENCY_BASES = [("wall_s", "render_s"), ("wall_s", "wall_s"), ("render_s", "render_s"),
+                    ("cpu_s", "render_cpu_s"), ("cpu_s", "cpu_s")]
+
+
 def efficiency(ladder_path):
     """For every scene and thread count: at each RMSE Cycles reached on its ladder, rtlab path's time to the
-    same RMSE (interpolated on its own ladder) over Cycles' time, once with Cycles' render phase and once
-    with its whole run, rtlab's whole run in both. Prints one line per scene and thread count with the ratios
-    at every matched level and their geometric mean."""
+    same RMSE (interpolated in log-log on its own ladder) over Cycles' time, on each basis of
+    EFFICIENCY_BASES. Prints one line per scene, thread count and basis: the geometric mean of the ratios over
+    the levels both reached, the ratio at the lowest common RMSE (the least start-up in it) and every level."""
     with open(ladder_path, newline="") as f:
         rows = list(csv.DictReader(f))
     groups = {}
     for r in rows:
         groups.setdefault((r["scene"], int(r["threads"])), []).append(r)
     for (scene, threads), rs in sorted(groups.items()):
-        rt = [(float(r["wall_s"]), float(r["rmse"])) for r in rs if r["renderer"] == "rtlab" and
-              r["integrator"] == "path"]
-        cy = [r for r in rs if r["renderer"] == "cycles"]
+        rt = [r for r in rs if r["renderer"] == "rtlab" and r["integrator"] == "path"]
+        cy = sorted((r for r in rs if r["renderer"] == "cycles"), key=lambda r: int(r["spp"]))
         if not rt or not cy:
             continue
-        for basis, key in (("render", "render_s"), ("wall", "wall_s")):
+        for rt_key, cy_key in EFFICIENCY_BASES:
+            name = f"rtlab_{rt_key[:-2]}_over_cycles_{cy_key[:-2]}"
+            if not all(r[rt_key] for r in rt) or not all(r[cy_key] for r in cy):
+                continue
+            points = [(float(r[rt_key]), float(r["rmse"])) for r in rt]
             ratios = []
-            for r in sorted(cy, key=lambda r: int(r["spp"])):
-                t_rt = time_at(rt, float(r["rmse"]))
+            for r in cy:
+                t_rt = time_at(points, float(r["rmse"]))
                 if t_rt is not None:
-                    ratios.append((int(r["spp"]), t_rt / float(r[key])))
+                    ratios.append((int(r["spp"]), t_rt / float(r[cy_key])))
             if not ratios:
-                print(f"{scene} threads={threads} cycles_{basis}: no RMSE level in common")
+                print(f"{scene} threads={threads} {name} geomean=nan last=nan levels=none")
                 continue
             geo = math.exp(sum(math.log(x) for _, x in ratios) / len(ratios))
             levels = " ".join(f"{spp}:{x:.3f}" for spp, x in ratios)
-            print(f"{scene} threads={threads} cycles_{basis} geomean={geo:.3f} last={ratios[-1][1]:.3f} "
-                  f"levels={levels}")
+            print(f"{scene} threads={threads} {name} geomean={geo:.3f} last={ratios[-1][1]:.3f} levels={levels}")
 
 
 def main(argv):

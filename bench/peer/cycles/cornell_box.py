@@ -30,8 +30,8 @@ no adaptive sampling, no clamps, filter glossy 0, light threshold 0, no path gui
 Standard view, black world not sampled as a light, float EXR, fixed thread count and seed; Cycles keeps its
 default sampling pattern and Russian roulette.
 
-Prints "cycles: render phase S s" measured around bpy.ops.render.render (scene sync, BVH build, rendering
-and writing the EXR), and with --pfm also writes the EXR's pixels as a little-endian PFM (outside the timed
+Prints "cycles: render phase S s (C CPU s)" measured around bpy.ops.render.render (scene sync, BVH build,
+rendering and writing the EXR; C: the processor seconds of every thread), and with --pfm also writes the EXR's pixels as a little-endian PFM (outside the timed
 phase) for readers without an EXR library.
 """
 import json
@@ -403,10 +403,10 @@ def main():
           f"depth {depth} (max_bounces {bounces}), {args['threads']} threads, seed {args['seed']}, "
           f"pattern {c.sampling_pattern}")
     sys.stdout.flush()
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     bpy.ops.render.render(write_still=True)
-    seconds = time.perf_counter() - t0
-    print(f"cycles: render phase {seconds:.3f} s")
+    seconds, cpu = time.perf_counter() - t0, time.process_time() - c0
+    print(f"cycles: render phase {seconds:.3f} s ({cpu:.3f} CPU s)")
     if not os.path.isfile(args["output"]):
         fail(f"Cycles wrote no {args['output']}")
     if args["pfm"]:
