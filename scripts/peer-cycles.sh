@@ -9,8 +9,9 @@
 #  3. agreement: converged renders (--ref-size, --ref-spp, every core) of the box, the glossy box and the bunny,
 #     compared as block means on an 8 x 8 grid: mean and largest relative difference.
 #  4. efficiency: the box and the bunny at a ladder of spp (--ladder), RMSE of each render against its own
-#     renderer's converged render (another seed); time to the same RMSE, interpolated in log-log: rtlab's whole
-#     run over Cycles' render phase (and over Cycles' whole run). Target: at most 1 / 1.5 = 0.667.
+#     renderer's converged render (another seed; that render's own noise taken out), time to the same RMSE,
+#     interpolated in log-log: rtlab's whole run over Cycles' render phase, also over Cycles' whole run and
+#     in processor seconds. Target: at most 1 / 1.5 = 0.667.
 #  5. docs/data/peer_cycles.csv (the ladder: the chart's points), docs/data/peer_cycles_summary.csv (timing,
 #     agreement, efficiency), docs/data/peer_cycles.meta.json, docs/charts/peer_cycles.png (RMSE against time,
 #     rtlab path and direct, Cycles).
@@ -22,7 +23,7 @@
 #   --repeat     timed runs per setting and renderer in part 2, the median is reported (default 3)
 #   --size --spp --depth   part 2's renders (default 256x256, 256 spp, depth 8: the scene files' own)
 #   --ref-size --ref-spp   the converged renders of parts 3 and 4 (default 128x128, 4096 spp)
-#   --ladder     part 4's sample counts (default "16 32 64 128 256 512 1024"), rendered at --ref-size
+#   --ladder     part 4's sample counts (default "8 16 32 64 128 256 512"), rendered at --ref-size
 #   --out        images and logs (default out/peer-cycles)
 # Blender is a peer, not a dependency: scripts/setup.sh does not install it (apt-get install
 # --no-install-recommends blender). The bunny needs models/stanford-bunny.obj on the data path
@@ -32,7 +33,7 @@ cd "$(dirname "$0")/.."
 root=$PWD
 
 build=1 repeat=3 threads_list="1 2" size=256x256 spp=256 depth=8 ref_size=128x128 ref_spp=4096
-ladder="16 32 64 128 256 512 1024" out=out/peer-cycles quick=0
+ladder="8 16 32 64 128 256 512" out=out/peer-cycles quick=0
 command_line="scripts/peer-cycles.sh $*"
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -104,6 +105,8 @@ median() {
   printf '%s\n' "$@" | sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'
 }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.3f", a / b}'; }
+# field NAME "a=1 name=2 ...": the value of NAME= in a line of key=value words.
+field() { tr ' ' '\n' <<<"$2" | sed -n "s/^$1=//p"; }
 
 # CPU seconds (user + system) of a whole run, from GNU time's file.
 cpu_seconds() { awk '{printf "%.3f", $1 + $2}' "$1"; }
@@ -162,7 +165,7 @@ for b in 0 1; do
   a=$($images agree "$out/depth1_rtlab.pfm" "$out/depth1_cycles_b$b.pfm")
   echo "1. depth: rtlab depth 1 against Cycles max_bounces $b: $a"
   for q in mean_rel max_rel image_ratio; do
-    row depth box "$max_threads" "$d_size" "$d_spp" 1 "cycles_bounces_${b}_$q" "$(sed -n "s/.*$q=\([^ ]*\).*/\1/p" <<<"$a")"
+    row depth box "$max_threads" "$d_size" "$d_spp" 1 "cycles_bounces_${b}_$q" "$(field "$q" "$a")"
   done
 done
 
@@ -212,19 +215,21 @@ for scene in box glossy ${scenes_timed#box}; do
   a=$($images agree "$out/ref_${scene}_rtlab.pfm" "$out/ref_${scene}_cycles.pfm" --blocks 8)
   echo "   $scene: $a (Cycles ${cr} s render, rtlab ${rr} s)"
   for q in mean_rel max_rel worst_block channel_max_rel channel_mean_rel dark_blocks dark_max_rel image_ratio; do
-    row agreement "$scene" "$max_threads" "$ref_size" "$ref_spp" "$depth" "$q" "$(sed -n "s/.*$q=\([^ ]*\).*/\1/p" <<<"$a")"
+    row agreement "$scene" "$max_threads" "$ref_size" "$ref_spp" "$depth" "$q" "$(field "$q" "$a")"
   done
   for r in rtlab cycles; do $images png "$out/ref_${scene}_$r.pfm" "$out/ref_${scene}_$r.png"; done
 done
 run_rtlab box "$ref_size" "$ref_spp" "$depth" "$max_threads" 1 "$out/ref_box_rtlab_direct.pfm" direct >/dev/null
 
 # --- 4. efficiency: RMSE against time -----------------------------------------------------------------------
-echo "scene,renderer,integrator,threads,width,height,spp,depth,render_s,wall_s,render_cpu_s,cpu_s,rmse,rel_rmse" >"$csv"
+# rmse: the reference's own noise taken out (MSE times ref_spp / (ref_spp + spp), scripts/peer/cycles_images.py);
+# rmse_raw: as measured.
+echo "scene,renderer,integrator,threads,width,height,spp,depth,render_s,wall_s,render_cpu_s,cpu_s,rmse,rel_rmse,rmse_raw" >"$csv"
 ladder_row() {  # scene renderer integrator threads spp "wall render cpu [render_cpu]" image reference
   local e w r c rc
   read -r w r c rc <<<"$6"
-  e=$($images rmse "$7" "$8")
-  echo "$1,$2,$3,$4,${ref_size%x*},${ref_size#*x},$5,$depth,$r,$w,${rc:-},$c,$(sed -n 's/rmse=\([^ ]*\) rel_rmse=\([^ ]*\)/\1,\2/p' <<<"$e")" >>"$csv"
+  e=$($images rmse "$7" "$8" "$5" "$ref_spp")
+  echo "$1,$2,$3,$4,${ref_size%x*},${ref_size#*x},$5,$depth,$r,$w,${rc:-},$c,$(sed -n 's/rmse=\([^ ]*\) rel_rmse=\([^ ]*\) rmse_raw=\([^ ]*\)/\1,\2,\3/p' <<<"$e")" >>"$csv"
 }
 echo "4. efficiency ladder at $ref_size, spp $ladder:"
 for scene in $scenes_timed; do

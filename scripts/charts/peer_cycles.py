@@ -65,8 +65,9 @@ def main(argv):
         title = f"{scene}, {r0['width']}x{r0['height']}, depth {r0['depth']}, {threads} thread{'s' * (threads > 1)}"
         if ratio is not None:
             cpu = efficiency_cpu.get((scene, threads))
-            title += f"\nrtlab time / Cycles time at equal RMSE: {ratio:.2f} (target <= 0.67)"
-            title += f"; processor s: {cpu:.2f}" if cpu is not None else ""
+            title += f"\nrtlab / Cycles time at equal RMSE: {ratio:.2f}"
+            title += f", processor s {cpu:.2f}" if cpu is not None else ""
+            title += " (target <= 0.67)"
         ax.set_title(title, fontsize=9)
         ax.set_xlabel("seconds")
         ax.set_ylabel("RMSE against own converged render")

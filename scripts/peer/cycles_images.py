@@ -6,8 +6,9 @@ Blender script converts its EXR to one): Debian's python3 has no EXR reader. Run
                                                      (default 8): relative differences of the blocks' mean
                                                      luminance and of every channel (worst_block: x:y from
                                                      the top left)
-    cycles_images.py rmse IMG.pfm REF.pfm            RMSE over every pixel and channel, and relative to the
-                                                     reference's mean
+    cycles_images.py rmse IMG.pfm REF.pfm [SPP REF_SPP]  RMSE over every pixel and channel, and relative to
+                                                     the reference's mean; with the sample counts, the
+                                                     reference's own noise taken out (rmse_raw keeps it)
     cycles_images.py efficiency LADDER.csv           time to equal RMSE, rtlab against Cycles, from the ladder
                                                      rows of LADDER.csv (docs/data/peer_cycles.csv)
 """
@@ -80,12 +81,17 @@ def agree(a_path, b_path, n):
           f"dark_max_rel={rel[dark].max() if dark.any() else 0.0:.5f} image_ratio={ratio:.5f}")
 
 
-def rmse(img_path, ref_path):
+def rmse(img_path, ref_path, spp=None, ref_spp=None):
+    """The reference's own noise adds to the measured mean square error: with independent samples both fall as
+    1 / spp, so MSE_measured = c (1 / spp + 1 / ref_spp), and the image's own part is MSE_measured ref_spp /
+    (ref_spp + spp) (given both counts; the raw value otherwise)."""
     img, ref = read_pfm(img_path), read_pfm(ref_path)
     if img.shape != ref.shape:
         raise SystemExit(f"cycles_images: {img_path} and {ref_path} differ in size")
-    value = math.sqrt(float(np.mean((img - ref) ** 2)))
-    print(f"rmse={value:.6g} rel_rmse={value / float(ref.mean()):.6g}")
+    mse = float(np.mean((img - ref) ** 2))
+    own = mse * ref_spp / (ref_spp + spp) if spp and ref_spp else mse
+    mean = float(ref.mean())
+    print(f"rmse={math.sqrt(own):.6g} rel_rmse={math.sqrt(own) / mean:.6g} rmse_raw={math.sqrt(mse):.6g}")
 
 
 def time_at(points, target):
@@ -143,8 +149,8 @@ def main(argv):
     elif len(argv) >= 4 and argv[1] == "agree":
         n = int(argv[argv.index("--blocks") + 1]) if "--blocks" in argv else 8
         agree(argv[2], argv[3], n)
-    elif len(argv) == 4 and argv[1] == "rmse":
-        rmse(argv[2], argv[3])
+    elif len(argv) in (4, 6) and argv[1] == "rmse":
+        rmse(argv[2], argv[3], *(int(x) for x in argv[4:6]))
     elif len(argv) == 3 and argv[1] == "efficiency":
         efficiency(argv[2])
     else:
