@@ -25,6 +25,7 @@
 #   --ref-size --ref-spp   the converged renders of parts 3 and 4 (default 128x128, 4096 spp)
 #   --ladder     part 4's sample counts (default "8 16 32 64 128 256 512"), rendered at --ref-size
 #   --out        images and logs (default out/peer-cycles)
+# The whole run took 2 hours on this project's 2-core machine with other builds running (load 8-10).
 # Blender is a peer, not a dependency: scripts/setup.sh does not install it (apt-get install
 # --no-install-recommends blender). The bunny needs models/stanford-bunny.obj on the data path
 # (RTLAB_SHARED_DIR, default ../shared); without it the bunny parts are left out.
