@@ -71,3 +71,8 @@ fi
 /usr/bin/python3 scripts/charts/accel_charts.py docs/charts $data/accel_*.csv
 /usr/bin/python3 scripts/charts/tradeoff_charts.py $data docs/charts
 /usr/bin/python3 scripts/charts/shading_charts.py $data docs/charts
+# The Cycles race measures with scripts/peer-cycles.sh (Blender needed); its chart is redrawn from its data here.
+if [ -f $data/peer_cycles.csv ]; then
+  /usr/bin/python3 scripts/charts/peer_cycles.py $data/peer_cycles.csv $data/peer_cycles_summary.csv \
+    $data/peer_cycles.meta.json docs/charts/peer_cycles.png
+fi
