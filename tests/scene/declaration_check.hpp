@@ -12,6 +12,7 @@
 #include <rtlab/scene/scene_registries.hpp>
 
 #include <catch2/catch.hpp>
+#include <scratch_files.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -51,11 +52,7 @@ inline double number_in_range(const ParamSpec& p) {
 
 // What the test gives a key that has no default: a value of its kind that a loader could hand over.
 struct Samples {
-    static std::filesystem::path scratch() {
-        auto dir = std::filesystem::temp_directory_path() / "rtlab_test_declarations";
-        std::filesystem::create_directories(dir);
-        return dir;
-    }
+    static std::filesystem::path scratch() { return test::scratch_dir("declarations"); }
 
     std::filesystem::path dir = scratch();
     std::filesystem::path image = dir / "px.png";

@@ -7,6 +7,7 @@
 #include <rtlab/shading/environment_map.hpp>
 
 #include <catch2/catch.hpp>
+#include <scratch_files.hpp>
 #include <skip.hpp>
 
 #include <filesystem>
@@ -20,8 +21,7 @@ namespace {
 
 // A black map but for a small bright patch on the horizon at u = 0.25: towards -z when not turned.
 fs::path write_patch_map() {
-    const fs::path dir = fs::temp_directory_path() / "rtlab_test_environment_scene";
-    fs::create_directories(dir);
+    const fs::path dir = test::scratch_dir("environment_scene");
     Image img(32, 16);
     for (int y = 7; y <= 8; ++y)
         for (int x = 7; x <= 8; ++x) img.at(x, y) = RGB(50.0f);
@@ -99,8 +99,7 @@ TEST_CASE("an envmap is the background of the whitted integrator too", "[scene]"
 TEST_CASE("a scene's cube map envmap reads six faces or one cross, each face where core's convention puts it",
           "[scene]") {
     // Face f is grey f + 1: the map seen along each axis gives the number of the face there.
-    const fs::path dir = fs::temp_directory_path() / "rtlab_test_environment_cube";
-    fs::create_directories(dir);
+    const fs::path dir = test::scratch_dir("environment_cube");
     const char* names[6] = {"px", "nx", "py", "ny", "pz", "nz"};
     const int cell[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}};  // the horizontal cross
     Image cross(16, 12);

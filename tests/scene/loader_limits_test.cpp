@@ -4,6 +4,7 @@
 #include <rtlab/scene/scene_loader.hpp>
 
 #include <catch2/catch.hpp>
+#include <scratch_files.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -74,8 +75,7 @@ TEST_CASE("an object with many keys gives one error per unknown key and loads", 
 }
 
 TEST_CASE("a scene given by its bare file name finds files beside it in the current folder", "[scene_loader]") {
-    const auto dir = std::filesystem::temp_directory_path() / "rtlab_bare_scene";
-    std::filesystem::create_directories(dir);
+    const auto dir = test::scratch_dir("bare_scene");
     {
         std::ofstream(dir / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
         std::ofstream(dir / "still.json") << R"({"version": 1, "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},

@@ -3,6 +3,7 @@
 #include <rtlab/textures/mip_map.hpp>
 
 #include <catch2/catch.hpp>
+#include <scratch_files.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -200,7 +201,7 @@ TEST_CASE("scene loader: a fallback stands in only for files that are missing", 
 }
 
 TEST_CASE("scene loader: a mesh file's warnings reach the scene's warnings with the shape's position", "[scene]") {
-    const auto obj = std::filesystem::temp_directory_path() / "rtlab_scene_loader_short_face.obj";
+    const auto obj = test::scratch_dir("scene_loader") / "short_face.obj";
     {
         std::ofstream out(obj);
         out << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2\n";

@@ -18,6 +18,7 @@
 #include <rtlab/tonemap/tone_operator.hpp>
 
 #include <catch2/catch.hpp>
+#include <scratch_files.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -325,8 +326,7 @@ Outcome try_load(Load&& load, std::string* message) {
 // A Radiance HDR file cut after its header once loaded without error. A face with fewer than 3 corners is
 // dropped (FORMATS.md), so a file whose only face has two corners holds no triangle: an error.
 TEST_CASE("malformed meshes and images give an rtlab Error naming the file", "[stability]") {
-    const auto dir = std::filesystem::temp_directory_path() / "rtlab_stability_malformed";
-    std::filesystem::create_directories(dir);
+    const auto dir = test::scratch_dir("stability_malformed");
     struct File {
         const char* name;
         std::string bytes;

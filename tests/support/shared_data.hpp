@@ -5,6 +5,8 @@
 // manifest, data/assets.tsv). A test whose source is absent calls test::skip() (skip.hpp).
 #include <rtlab/core/data_path.hpp>
 
+#include "scratch_files.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -31,13 +33,6 @@ inline std::optional<std::filesystem::path> shared_dir() {
 /// The message of a test skipped for want of ../shared.
 inline std::string needs_shared(const std::string& what) {
     return what + " needs ../shared (set RTLAB_SHARED_DIR" + (shared_disabled() ? "; RTLAB_NO_SHARED=1 is set)" : ")");
-}
-
-/// A scratch folder for files a test writes, unique per test executable run.
-inline std::filesystem::path scratch_dir(const std::string& name) {
-    auto dir = std::filesystem::temp_directory_path() / ("rtlab_test_" + name);
-    std::filesystem::create_directories(dir);
-    return dir;
 }
 
 enum class DataSource { shared, packages };
