@@ -1,6 +1,7 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/render/render_job.hpp>
 #include <rtlab/render/sampled_lights.hpp>
+#include <rtlab/render/sppm.hpp>
 
 #include <string>
 
@@ -19,6 +20,24 @@ RenderResult render_job(const RenderJob& job, const RenderCallbacks& callbacks) 
     const SampledLights sampled = make_sampled_lights(job.scene, job.lights, job.whitted);
     PathOptions options = job.path;
     if (!options.environment) options.environment = job.whitted.environment;
+    if (job.integrator == IntegratorKind::sppm)
+        return render_sppm(*job.camera, *sampled.scene, sampled.lights, sampled.sphere, options, job.photons,
+                           job.settings, callbacks);
+    if (job.integrator == IntegratorKind::photon) {
+        const PhotonIntegrator integrator(*sampled.scene, sampled.lights, sampled.sphere, options, job.photons,
+                                          job.settings.seed, job.settings.threads, callbacks.stop);
+        RenderResult result;
+        if (integrator.cancelled()) {
+            // Stopped while shooting photons: no pixel was rendered.
+            result.image = Image(job.camera->width(), job.camera->height());
+            result.samples.assign(result.image.pixel_count(), 0);
+            result.stats.cancelled = true;
+        } else {
+            result = render(*job.camera, integrator, job.settings, callbacks);
+        }
+        result.stats.rays += RayCounters{integrator.photon_rays(), 0};
+        return result;
+    }
     const PathIntegrator integrator(*sampled.scene, sampled.lights, options);
     const PathRadiance source(integrator, job.integrator);
     return render(*job.camera, source, job.settings, callbacks);

@@ -30,6 +30,8 @@ std::optional<IntegratorKind> parse_integrator(std::string_view name) {
     if (name == "whitted") return IntegratorKind::whitted;
     if (name == "direct") return IntegratorKind::direct;
     if (name == "path") return IntegratorKind::path;
+    if (name == "photon") return IntegratorKind::photon;
+    if (name == "sppm") return IntegratorKind::sppm;
     return std::nullopt;
 }
 
@@ -41,6 +43,10 @@ std::string_view integrator_name(IntegratorKind kind) {
             return "direct";
         case IntegratorKind::path:
             return "path";
+        case IntegratorKind::photon:
+            return "photon";
+        case IntegratorKind::sppm:
+            return "sppm";
     }
     return "whitted";
 }

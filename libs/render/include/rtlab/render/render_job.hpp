@@ -1,6 +1,7 @@
 #pragma once
 /// \brief Everything one render needs, and the function that renders it.
 #include <rtlab/render/camera.hpp>
+#include <rtlab/render/photon_integrator.hpp>
 #include <rtlab/render/radiance_source.hpp>
 #include <rtlab/render/renderer.hpp>
 #include <rtlab/render/scene.hpp>
@@ -23,7 +24,8 @@ struct RenderJob {
     /// background (a uniform environment light) or environment (looked up, not sampled) and the convention
     /// (physical only).
     IntegratorKind integrator = IntegratorKind::whitted;
-    PathOptions path;
+    PathOptions path;         ///< direct, path, photon, sppm
+    PhotonOptions photons;    ///< photon, sppm
     RenderSettings settings;  ///< pattern, spp, adaptive, seed, threads
 };
 
@@ -62,9 +64,11 @@ private:
     IntegratorKind m_kind;
 };
 
-/// Renders a job: RenderResult::stats counts camera, shadow, reflected and refracted rays, and its image is
-/// the same for any settings.threads. Throws rtlab::Error for a job without camera or scene, a null light,
-/// or bad settings (see render()).
+/// Renders a job: RenderResult::stats counts camera, shadow, reflected and refracted rays (photon rays among the
+/// reflected and refracted), and its image is the same for any settings.threads. photon shoots its photons first
+/// (settings.seed and threads; the stop flag ends that too), then renders with any pattern; sppm runs settings.spp
+/// iterations (render_sppm: pattern sobol or random). Throws rtlab::Error for a job without camera or scene, a null
+/// light, or bad settings (see render()).
 RenderResult render_job(const RenderJob& job, const RenderCallbacks& callbacks = {});
 
 }  // namespace rtlab

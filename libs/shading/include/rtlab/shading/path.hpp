@@ -13,9 +13,10 @@
 
 namespace rtlab {
 
-/// \brief The integrators a render can choose by name.
-enum class IntegratorKind { whitted, direct, path };
-/// "whitted", "direct" or "path"; nullopt for another word.
+/// \brief The integrators a render can choose by name: photon (photon mapping) and sppm (stochastic progressive
+/// photon mapping) are rtlab::render's (rtlab/render/photon_integrator.hpp, sppm.hpp).
+enum class IntegratorKind { whitted, direct, path, photon, sppm };
+/// "whitted", "direct", "path", "photon" or "sppm"; nullopt for another word.
 std::optional<IntegratorKind> parse_integrator(std::string_view name);
 std::string_view integrator_name(IntegratorKind kind);
 
