@@ -54,9 +54,14 @@ int main(int argc, char** argv) {
     job.photons.photons = photons;
 
     Image reference;
+    double reference_noise = -1.0;  // unknown for a cached reference
     if (!reference_file.empty() && fs::exists(reference_file)) {
         reference = read_image(reference_file, ColorEncoding::linear);
         std::fprintf(stderr, "reference: %s\n", reference_file.c_str());
+        if (std::FILE* f = std::fopen((reference_file + ".noise").c_str(), "r")) {
+            if (std::fscanf(f, "%lf", &reference_noise) != 1) reference_noise = -1.0;
+            std::fclose(f);
+        }
     }
     if (reference.width() != size || reference.height() != size) {
         RenderJob ref = job;
@@ -70,8 +75,15 @@ int main(int argc, char** argv) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const bench::BlockDifference halves =
             bench::block_difference(r.buffer->half_mean_image(0), r.buffer->half_mean_image(1), 8);
+        // Each half-image has twice the whole's variance, independently: their difference has four times it, so
+        // the whole's noise is about half the halves' difference.
+        reference_noise = 0.5 * halves.mean;
         std::fprintf(stderr, "reference: path, %d spp, %.1f s; its block noise about %.3g%% (half-images %.3g%% apart)\n",
-                     ref_spp, seconds, 50.0 * halves.mean, 100.0 * halves.mean);
+                     ref_spp, seconds, 100.0 * reference_noise, 100.0 * halves.mean);
+        if (!reference_file.empty()) {
+            std::FILE* f = std::fopen((reference_file + ".noise").c_str(), "w");
+            if (f) std::fprintf(f, "%.6g\n", reference_noise), std::fclose(f);
+        }
         if (!reference_file.empty()) write_image(reference, reference_file);
     }
 
@@ -85,14 +97,15 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "sppm_convergence: cannot write %s\n", csv.c_str());
         return 1;
     }
-    std::fprintf(out, "iterations,photons,seconds,block_mean_relative,block_max_relative,rmse\n");
+    std::fprintf(out, "iterations,photons,seconds,block_mean_relative,block_max_relative,rmse,reference_block_noise\n");
     double first = -1.0, last = 0.0;
     for (int next = 1; next <= iterations; next *= 2) {
         while (sppm.iterations() < next) sppm.iterate();
         const Image image = sppm.image();
         const bench::BlockDifference d = bench::block_difference(image, reference, 8);
-        std::fprintf(out, "%d,%llu,%.3f,%.5g,%.5g,%.5g\n", next, static_cast<unsigned long long>(sppm.photons_shot()),
-                     sppm.stats().seconds, d.mean, d.largest, bench::rmse(image, reference));
+        std::fprintf(out, "%d,%llu,%.3f,%.5g,%.5g,%.5g,%.4g\n", next,
+                     static_cast<unsigned long long>(sppm.photons_shot()), sppm.stats().seconds, d.mean, d.largest,
+                     bench::rmse(image, reference), reference_noise);
         std::fflush(out);
         if (first < 0.0) first = d.mean;
         last = d.mean;

@@ -20,8 +20,8 @@ using detail::GatherPoint;
 // Pixels per gather task: a row band, enough work per task, every pixel updated by its task alone.
 constexpr int kGatherRows = 4;
 
-// The starting radius of a pixel without one given: this many pixel footprints at its first visible point.
-constexpr float kFootprints = 2.0f;
+// The smallest starting radius of a pixel without one given: this many pixel footprints at its first visible point.
+constexpr float kFootprints = 1.0f;
 
 // The visible point of one pixel in one iteration: what the gather reads.
 struct VisiblePoint {
@@ -111,7 +111,8 @@ struct SppmRenderer::State {
           pixels(points.size()),
           source(scene_, lights_, path, camera_.width(), points),
           renderer(camera_, source, settings_),
-          angle(pixel_angle(camera_)) {}
+          angle(pixel_angle(camera_)),
+          max_radius(options_.max_radius > 0.0f ? options_.max_radius : sphere_.radius / 20.0f) {}
 
     const Camera& camera;
     const SceneQuery& scene;
@@ -125,6 +126,7 @@ struct SppmRenderer::State {
     SppmCameraPass source;
     ProgressiveRenderer renderer;
     float angle;
+    float max_radius;
     RayStats photon_rays;
 
     void gather(std::uint32_t iteration, const PhotonMap& map) {
@@ -140,9 +142,22 @@ struct SppmRenderer::State {
         });
     }
 
+    // A pixel's first radius: options.radius, else the distance to the nearest-th photon of its first iteration's
+    // (PhotonOptions::nearest, as photon's estimates use), between a pixel footprint and the maximum radius: large
+    // where photons are few, so that early iterations are not mostly noise; any start converges.
+    float starting_radius(const VisiblePoint& vp, const PhotonMap& map) const {
+        if (options.radius > 0.0f) return options.radius;
+        const float footprint = kFootprints * angle * std::max(vp.distance, 1e-6f);
+        const float largest = std::max(footprint, max_radius);
+        thread_local std::vector<PointNeighbor> scratch;
+        scratch.resize(static_cast<std::size_t>(options.nearest));
+        const std::size_t n = map.tree().nearest(vp.position, largest * largest, scratch);
+        if (n < scratch.size()) return largest;
+        return std::clamp(std::sqrt(scratch[n - 1].distance2), footprint, largest);
+    }
+
     void update(const VisiblePoint& vp, PixelState& px, const PhotonMap& map) const {
-        if (px.radius == 0.0f)
-            px.radius = options.radius > 0.0f ? options.radius : kFootprints * angle * std::max(vp.distance, 1e-6f);
+        if (px.radius == 0.0f) px.radius = starting_radius(vp, map);
         const long allowed = static_cast<long>(path.max_depth) - static_cast<long>(vp.bounce) - 1;
         if (allowed < 1) return;  // photons here have made a bounce: no path of them fits
         std::array<double, 3> phi{};

@@ -44,14 +44,16 @@ struct WalkStart;
 struct PhotonOptions {
     /// photon: photon paths shot for the maps; sppm: per iteration.
     std::uint32_t photons = 200000;
-    int nearest = 50;  ///< photon: photons per density estimate (k)
-    /// photon: the largest radius an estimate looks within; 0 = the scene sphere's radius / 20.
+    /// photon: photons per density estimate (k); sppm: the photons a pixel's starting radius reaches.
+    int nearest = 50;
+    /// photon: the largest radius an estimate looks within; sppm: the largest starting radius; 0 = the scene
+    /// sphere's radius / 20.
     float max_radius = 0.0f;
     /// photon: final gather rays per camera sample (0: the global map read at the gather point itself).
     int gather = 1;
     PhotonFilter filter = PhotonFilter::epanechnikov;  ///< photon: the density estimate's kernel
-    /// sppm: the starting radius of every pixel's estimate in world units; 0 = 2 pixel footprints at the pixel's
-    /// first visible point.
+    /// sppm: the starting radius of every pixel's estimate in world units; 0 = for each pixel, the distance from its
+    /// first visible point to the nearest-th photon of that iteration, between a pixel footprint and max_radius.
     float radius = 0.0f;
     float alpha = 2.0f / 3.0f;  ///< sppm: the fraction of new photons kept per iteration, in (0, 1)
 };
