@@ -1,7 +1,5 @@
 #include "options.hpp"
 
-#include "render_worker.hpp"
-
 #include <rtlab/tonemap/tone_operator.hpp>
 
 namespace rtlab::app {
@@ -21,7 +19,6 @@ std::optional<int> parse_view_options(int argc, char** argv, ViewOptions& o) {
     cli.add_text("--script", script, "a file of commands, run as if typed on standard input");
     cli.add_flag("--stdin", o.commands_on_stdin,
                  "read commands from standard input (listed in apps/view/commands.hpp)");
-    cli.add_word("--integrator", o.integrator, rtlab::view::integrator_names(), "the integrator");
     cli.add_number("--exposure", o.exposure, -64, 64, "exposure in stops");
     if (const auto status = cli.parse(argc, argv)) return status;
     if (scene.empty()) return cli.usage_error("give a scene file; --help shows the options");
@@ -44,6 +41,7 @@ std::optional<int> parse_view_options(int argc, char** argv, ViewOptions& o) {
     }
     o.scene = scene;
     o.script = script;
+    o.integrator = o.common.integrator.value_or("");
     return std::nullopt;
 }
 

@@ -16,7 +16,7 @@ struct ViewOptions {
     std::filesystem::path screenshot_file;
     std::filesystem::path script;  ///< --script FILE: commands as on standard input
     bool commands_on_stdin = false;
-    std::string integrator = "whitted";
+    std::string integrator;          ///< --integrator (a common flag); empty: the scene's
     std::optional<double> exposure;  ///< stops
 };
 

@@ -3,6 +3,7 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/render/progressive.hpp>
 #include <rtlab/render/render_job.hpp>
+#include <rtlab/render/sampled_lights.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -35,13 +36,37 @@ struct IntegratorEntry {
     std::function<Integrator(const RenderJob&)> make;
 };
 
+/// direct and path over the scene's sampled lights (emitting shapes, area lights as quads, the background as an
+/// environment), which the integrator refers to: one object owns both.
+struct SampledIntegrator {
+    SampledIntegrator(const RenderJob& job)
+        : sampled(make_sampled_lights(job.scene, job.lights, job.whitted)),
+          integrator(*sampled.scene, sampled.lights, path_options(job)) {}
+    static PathOptions path_options(const RenderJob& job) {
+        PathOptions options = job.path;
+        if (!options.environment) options.environment = job.whitted.environment;
+        return options;
+    }
+    SampledLights sampled;
+    PathIntegrator integrator;
+};
+
+Integrator make_sampled(const RenderJob& job, IntegratorKind kind) {
+    auto owner = std::make_shared<const SampledIntegrator>(job);
+    auto source = std::make_unique<PathRadiance>(owner->integrator, kind);
+    return Integrator{std::move(owner), std::move(source)};
+}
+
 const std::vector<IntegratorEntry>& integrators() {
-    static const std::vector<IntegratorEntry> list{{"whitted", [](const RenderJob& job) {
-                                                        auto whitted = std::make_shared<const WhittedIntegrator>(
-                                                            *job.scene, job.lights, job.whitted);
-                                                        auto source = std::make_unique<WhittedRadiance>(*whitted);
-                                                        return Integrator{std::move(whitted), std::move(source)};
-                                                    }}};
+    static const std::vector<IntegratorEntry> list{
+        {"whitted",
+         [](const RenderJob& job) {
+             auto whitted = std::make_shared<const WhittedIntegrator>(*job.scene, job.lights, job.whitted);
+             auto source = std::make_unique<WhittedRadiance>(*whitted);
+             return Integrator{std::move(whitted), std::move(source)};
+         }},
+        {"direct", [](const RenderJob& job) { return make_sampled(job, IntegratorKind::direct); }},
+        {"path", [](const RenderJob& job) { return make_sampled(job, IntegratorKind::path); }}};
     return list;
 }
 
@@ -214,7 +239,10 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
     settings.threads = choice.threads;
     const int width = camera->width(), height = camera->height();
     try {
-        const Integrator integrator = make_integrator(choice.integrator, scene->job);
+        // No choice yet: the integrator the scene file names, as rtlab-render would use.
+        const std::string integrator_name =
+            choice.integrator.empty() ? std::string(rtlab::integrator_name(scene->job.integrator)) : choice.integrator;
+        const Integrator integrator = make_integrator(integrator_name, scene->job);
         ProgressiveRenderer renderer(*camera, *integrator.source, settings);
         renderer.plan_passes(choice.spp);
         {
@@ -225,6 +253,7 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
                                           std::vector<std::uint32_t>(n)};
             }
             m_status.rendering = true;
+            m_status.integrator = integrator_name;
             m_status.passes_done = 0;
             m_status.spp = choice.spp;
             m_status.seconds = 0.0;

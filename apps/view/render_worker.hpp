@@ -60,6 +60,7 @@ struct WorkerStatus {
     double progress = 0.0;      ///< tiles done over tiles of every planned pass
     std::uint64_t request = 0;  ///< the request being rendered
     double restart_ms = 0.0;    ///< from the last request to the first finished tile of its render
+    std::string integrator;     ///< the one rendering (the scene's until one is chosen)
 };
 
 class RenderWorker {

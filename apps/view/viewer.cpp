@@ -564,9 +564,9 @@ private:
         ImGui::Text("%.0f fps (frame %.1f ms)  restart %.1f ms", m_fps, m_frame_ms, s.restart_ms);
         ImGui::Separator();
 
-        int integrator =
-            static_cast<int>(std::find(integrator_names().begin(), integrator_names().end(), m_choice.integrator) -
-                             integrator_names().begin());
+        const std::string& current = m_choice.integrator.empty() ? s.integrator : m_choice.integrator;
+        int integrator = static_cast<int>(std::find(integrator_names().begin(), integrator_names().end(), current) -
+                                          integrator_names().begin());
         if (combo("integrator", integrator, integrator_names())) {
             m_choice.integrator = integrator_names()[static_cast<std::size_t>(integrator)];
             restart();
@@ -617,9 +617,11 @@ private:
         ImGui::End();
     }
 
+    /// A drop-down list; an index outside the names (nothing chosen yet: the scene still loading) shows no name.
     static bool combo(const char* label, int& index, const std::vector<std::string>& names) {
         bool changed = false;
-        if (ImGui::BeginCombo(label, names[static_cast<std::size_t>(index)].c_str())) {
+        const bool known = index >= 0 && static_cast<std::size_t>(index) < names.size();
+        if (ImGui::BeginCombo(label, known ? names[static_cast<std::size_t>(index)].c_str() : "")) {
             for (std::size_t i = 0; i < names.size(); ++i)
                 if (ImGui::Selectable(names[i].c_str(), static_cast<int>(i) == index)) {
                     index = static_cast<int>(i);

@@ -307,7 +307,9 @@ TEST_CASE("a module with a wrong record is refused naming the field, the expecte
                                      std::to_string(host.rtlab_version_minor + 1) + "." +
                                      std::to_string(host.rtlab_version_patch);
     const std::vector<std::pair<std::string, std::vector<std::string>>> cases{
-        {"abi", {"plugin ABI version: expected 2, got 100"}},
+        {"abi",
+         {"plugin ABI version: expected " + std::to_string(RTLAB_PLUGIN_ABI_VERSION) + ", got " +
+          std::to_string(RTLAB_PLUGIN_ABI_VERSION + 98)}},
         {"headers",
          {"public headers hash: expected '" + std::string(host.headers_hash) + "', got '" + std::string(64, '0') +
           "'"}},

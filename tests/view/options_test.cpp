@@ -28,3 +28,12 @@ TEST_CASE("rtlab-view rejects a bad pass count and sampling it does not do", "[v
     CHECK(parse({"scene.json", "--aa", "adaptive"}, b) == kExitUsage);
     CHECK(parse({}, c) == kExitUsage);
 }
+
+TEST_CASE("rtlab-view renders with the scene's integrator unless --integrator names one", "[view]") {
+    ViewOptions a, b, c;
+    REQUIRE_FALSE(parse({"scene.json"}, a));
+    CHECK(a.integrator.empty());  // the worker then uses the file's
+    REQUIRE_FALSE(parse({"scene.json", "--integrator", "path"}, b));
+    CHECK(b.integrator == "path");
+    CHECK(parse({"scene.json", "--integrator", "photons"}, c) == kExitUsage);
+}
