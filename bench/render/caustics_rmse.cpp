@@ -54,16 +54,26 @@ int main(int argc, char** argv) {
     std::uint32_t photons = 50000;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i], value = argv[i + 1];
-        if (flag == "--width") width = std::max(8, std::atoi(value.c_str()));
-        else if (flag == "--height") height = std::max(8, std::atoi(value.c_str()));
-        else if (flag == "--ref-spp") ref_spp = std::max(1, std::atoi(value.c_str()));
-        else if (flag == "--max-spp") max_spp = std::max(4, std::atoi(value.c_str()));
-        else if (flag == "--iterations") iterations = std::max(1, std::atoi(value.c_str()));
-        else if (flag == "--photons") photons = static_cast<std::uint32_t>(std::max(1, std::atoi(value.c_str())));
-        else if (flag == "--threads") threads = std::atoi(value.c_str());
-        else if (flag == "--csv") csv = value;
-        else if (flag == "--reference") reference_file = value;
-        else if (flag == "--data-dir") data_dirs.emplace_back(value);
+        if (flag == "--width")
+            width = std::max(8, std::atoi(value.c_str()));
+        else if (flag == "--height")
+            height = std::max(8, std::atoi(value.c_str()));
+        else if (flag == "--ref-spp")
+            ref_spp = std::max(1, std::atoi(value.c_str()));
+        else if (flag == "--max-spp")
+            max_spp = std::max(4, std::atoi(value.c_str()));
+        else if (flag == "--iterations")
+            iterations = std::max(1, std::atoi(value.c_str()));
+        else if (flag == "--photons")
+            photons = static_cast<std::uint32_t>(std::max(1, std::atoi(value.c_str())));
+        else if (flag == "--threads")
+            threads = std::atoi(value.c_str());
+        else if (flag == "--csv")
+            csv = value;
+        else if (flag == "--reference")
+            reference_file = value;
+        else if (flag == "--data-dir")
+            data_dirs.emplace_back(value);
         else {
             std::fprintf(stderr, "caustics_rmse: unknown flag %s\n", flag.c_str());
             return 2;
@@ -136,8 +146,8 @@ int main(int argc, char** argv) {
         j.settings.spp = spp;
         const Clock clock;
         const Image image = render_job(j).image;
-        row("photon", std::to_string(j.photons.photons) + " photons " + std::to_string(spp) + " spp",
-            clock.elapsed(), image);
+        row("photon", std::to_string(j.photons.photons) + " photons " + std::to_string(spp) + " spp", clock.elapsed(),
+            image);
     }
     {
         const SampledLights sampled = make_sampled_lights(job.scene, job.lights, job.whitted);

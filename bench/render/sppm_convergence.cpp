@@ -31,14 +31,22 @@ int main(int argc, char** argv) {
     std::uint32_t photons = 20000;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i], value = argv[i + 1];
-        if (flag == "--scene") scene_file = value;
-        else if (flag == "--size") size = std::max(8, std::atoi(value.c_str()));
-        else if (flag == "--ref-spp") ref_spp = std::max(1, std::atoi(value.c_str()));
-        else if (flag == "--iterations") iterations = std::max(1, std::atoi(value.c_str()));
-        else if (flag == "--photons") photons = static_cast<std::uint32_t>(std::max(1, std::atoi(value.c_str())));
-        else if (flag == "--threads") threads = std::atoi(value.c_str());
-        else if (flag == "--csv") csv = value;
-        else if (flag == "--reference") reference_file = value;
+        if (flag == "--scene")
+            scene_file = value;
+        else if (flag == "--size")
+            size = std::max(8, std::atoi(value.c_str()));
+        else if (flag == "--ref-spp")
+            ref_spp = std::max(1, std::atoi(value.c_str()));
+        else if (flag == "--iterations")
+            iterations = std::max(1, std::atoi(value.c_str()));
+        else if (flag == "--photons")
+            photons = static_cast<std::uint32_t>(std::max(1, std::atoi(value.c_str())));
+        else if (flag == "--threads")
+            threads = std::atoi(value.c_str());
+        else if (flag == "--csv")
+            csv = value;
+        else if (flag == "--reference")
+            reference_file = value;
         else {
             std::fprintf(stderr, "sppm_convergence: unknown flag %s\n", flag.c_str());
             return 2;
@@ -78,7 +86,8 @@ int main(int argc, char** argv) {
         // Each half-image has twice the whole's variance, independently: their difference has four times it, so
         // the whole's noise is about half the halves' difference.
         reference_noise = 0.5 * halves.mean;
-        std::fprintf(stderr, "reference: path, %d spp, %.1f s; its block noise about %.3g%% (half-images %.3g%% apart)\n",
+        std::fprintf(stderr,
+                     "reference: path, %d spp, %.1f s; its block noise about %.3g%% (half-images %.3g%% apart)\n",
                      ref_spp, seconds, 100.0 * reference_noise, 100.0 * halves.mean);
         if (!reference_file.empty()) {
             std::FILE* f = std::fopen((reference_file + ".noise").c_str(), "w");

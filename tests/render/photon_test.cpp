@@ -37,8 +37,9 @@ bool same_photons(const std::vector<Photon>& a, const std::vector<Photon>& b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i) {
         const Photon &p = a[i], &q = b[i];
-        if (std::memcmp(&p.position, &q.position, sizeof(Point3)) != 0 || std::memcmp(&p.wi, &q.wi, sizeof(Vec3)) != 0 ||
-            std::memcmp(&p.power, &q.power, sizeof(RGB)) != 0 || p.bounces != q.bounces || p.path != q.path)
+        if (std::memcmp(&p.position, &q.position, sizeof(Point3)) != 0 ||
+            std::memcmp(&p.wi, &q.wi, sizeof(Vec3)) != 0 || std::memcmp(&p.power, &q.power, sizeof(RGB)) != 0 ||
+            p.bounces != q.bounces || p.path != q.path)
             return false;
     }
     return true;
@@ -75,7 +76,10 @@ RenderJob mixed_job(IntegratorKind kind) {
         {std::make_shared<Sphere>(Point3(-1.0f, 0.5f, 0), 0.5f), material("glass"), {}, "glass"},
         {std::make_shared<Sphere>(Point3(0.2f, 0.4f, -0.5f), 0.4f), rough_glass(0.3f), {}, "frosted"},
         {std::make_shared<Sphere>(Point3(1.1f, 0.4f, 0.3f), 0.4f), lambert(RGB(0.7f, 0.4f, 0.2f)), {}, "ball"},
-        {std::make_shared<Quad>(Point3(-2, 0, -1.5f), Vec3(4, 0, 0), Vec3(0, 1.5f, 0)), material("mirror"), {}, "mirror"},
+        {std::make_shared<Quad>(Point3(-2, 0, -1.5f), Vec3(4, 0, 0), Vec3(0, 1.5f, 0)),
+         material("mirror"),
+         {},
+         "mirror"},
         {std::make_shared<Sphere>(Point3(0.8f, 1.8f, -0.5f), 0.2f), emitting(8.0f), {}, "lamp"}});
     Params area;
     area.set("corner", list(Vec3(-1.5f, 3, -1))).set("edge_u", list(Vec3(1, 0, 0))).set("edge_v", list(Vec3(0, 0, 1)));
@@ -120,9 +124,11 @@ TEST_CASE("photon density under a point light gives the irradiance on a plane", 
     // most 1/sqrt(k) (Poisson counts; Sobol photons are more even), here 4.5%: each point is checked at 4 of them,
     // plus 1% for the curvature of E over the disk, a family of 5 points at p < 3e-4.
     const float intensity = 2.0f, h = 1.0f;
-    const SampledLights s = sampled(
-        {{std::make_shared<Quad>(Point3(-20, 0, 20), Vec3(40, 0, 0), Vec3(0, 0, -40)), lambert(RGB(0.5f)), {}, "plane"}},
-        {point_light(Point3(0, h, 0), intensity)});
+    const SampledLights s = sampled({{std::make_shared<Quad>(Point3(-20, 0, 20), Vec3(40, 0, 0), Vec3(0, 0, -40)),
+                                      lambert(RGB(0.5f)),
+                                      {},
+                                      "plane"}},
+                                    {point_light(Point3(0, h, 0), intensity)});
     PhotonTraceSettings settings;
     settings.photons = 400000 / kScale;
     settings.max_depth = 1;
@@ -151,9 +157,9 @@ TEST_CASE("the power stored is the power emitted times the albedo of every bounc
     // every bounce, and Lambert's sampled value is rho exactly, so without roulette the power stored at bounce b is
     // Phi rho^b per photon shot, to rounding. With roulette it is so in expectation.
     const float rho = 0.6f, intensity = 1.5f;
-    const SampledLights s = sampled(
-        {{std::make_shared<Sphere>(Point3(0.0f), 1.0f), lambert(RGB(rho)), {true, true}, "inside"}},
-        {point_light(Point3(0.1f, -0.2f, 0.3f), intensity)});
+    const SampledLights s =
+        sampled({{std::make_shared<Sphere>(Point3(0.0f), 1.0f), lambert(RGB(rho)), {true, true}, "inside"}},
+                {point_light(Point3(0.1f, -0.2f, 0.3f), intensity)});
     const double phi = 4.0 * kPi * intensity;
     PhotonTraceSettings settings;
     settings.photons = 20000 / kScale;
@@ -189,10 +195,10 @@ TEST_CASE("the power stored is the power emitted times the albedo of every bounc
     }
     SECTION("an area light and a point light chosen by power") {
         // An emitting sphere inside too (one-sided, outwards): the power reaching the first bounce is both lights'.
-        const SampledLights two = sampled(
-            {{std::make_shared<Sphere>(Point3(0.0f), 1.0f), lambert(RGB(rho)), {true, true}, "inside"},
-             {std::make_shared<Sphere>(Point3(-0.6f, 0.0f, 0.0f), 0.05f), emitting(40.0f), {}, "lamp"}},
-            {point_light(Point3(0.6f, 0.0f, 0.0f), intensity)});
+        const SampledLights two =
+            sampled({{std::make_shared<Sphere>(Point3(0.0f), 1.0f), lambert(RGB(rho)), {true, true}, "inside"},
+                     {std::make_shared<Sphere>(Point3(-0.6f, 0.0f, 0.0f), 0.05f), emitting(40.0f), {}, "lamp"}},
+                    {point_light(Point3(0.6f, 0.0f, 0.0f), intensity)});
         settings.roulette = false;
         settings.max_depth = 1;
         const PhotonTrace t = trace_photons(*two.scene, two.lights, two.sphere, settings);
@@ -209,13 +215,11 @@ TEST_CASE("photon paths are classed by their events and stored on diffuse surfac
     // A point light under a mirror ceiling, a rough glass ball and a diffuse floor: photons reach the floor straight
     // (direct), off the mirror or through the glass alone (caustic: pass-through events), or after the floor
     // (indirect). None is stored on the mirror or the glass.
-    const SampledLights s =
-        sampled({{std::make_shared<Quad>(Point3(-5, 0, 5), Vec3(10, 0, 0), Vec3(0, 0, -10)), lambert(RGB(0.8f)), {},
-                  "floor"},
-                 {std::make_shared<Quad>(Point3(-5, 3, -5), Vec3(10, 0, 0), Vec3(0, 0, 10)), material("mirror"), {},
-                  "mirror"},
-                 {std::make_shared<Sphere>(Point3(0.5f, 0.6f, 0.0f), 0.6f), rough_glass(0.2f), {}, "ball"}},
-                {point_light(Point3(0, 2.5f, 0.5f), 10.0f)});
+    const SampledLights s = sampled(
+        {{std::make_shared<Quad>(Point3(-5, 0, 5), Vec3(10, 0, 0), Vec3(0, 0, -10)), lambert(RGB(0.8f)), {}, "floor"},
+         {std::make_shared<Quad>(Point3(-5, 3, -5), Vec3(10, 0, 0), Vec3(0, 0, 10)), material("mirror"), {}, "mirror"},
+         {std::make_shared<Sphere>(Point3(0.5f, 0.6f, 0.0f), 0.6f), rough_glass(0.2f), {}, "ball"}},
+        {point_light(Point3(0, 2.5f, 0.5f), 10.0f)});
     PhotonTraceSettings settings;
     settings.photons = 20000 / kScale;
     const PhotonTrace t = trace_photons(*s.scene, s.lights, s.sphere, settings);
@@ -309,7 +313,9 @@ TEST_CASE("photon and sppm count no light twice: the caustic under a glass ball"
     job.scene = std::make_shared<Scene>(std::vector<SceneObject>{
         {std::make_shared<Quad>(Point3(-2, 0, 2), Vec3(4, 0, 0), Vec3(0, 0, -4)), lambert(RGB(0.8f)), {}, "floor"},
         {std::make_shared<Sphere>(Point3(0.0f, 0.9f, 0), 0.4f), material("glass"), {}, "glass"},
-        {std::make_shared<Quad>(Point3(-0.3f, 2.6f, -0.3f), Vec3(0.6f, 0, 0), Vec3(0, 0, 0.6f)), emitting(5.0f), {},
+        {std::make_shared<Quad>(Point3(-0.3f, 2.6f, -0.3f), Vec3(0.6f, 0, 0), Vec3(0, 0, 0.6f)),
+         emitting(5.0f),
+         {},
          "lamp"}});
     job.path.max_depth = 6;
     job.settings.pattern = PixelPattern::sobol;

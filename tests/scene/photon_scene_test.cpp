@@ -140,10 +140,9 @@ TEST_CASE("photon and sppm count no light twice: a glass block's caustic in the 
     const Difference photon_global = block_differences(render_job(job).image, ref);
     job.photons.gather = 1;
     const Difference photon_gather = block_differences(render_job(job).image, ref);
-    INFO("relative block differences, mean and largest: sppm " << sppm.mean << " " << sppm.largest
-                                                                << ", photon without final gather " << photon_global.mean
-                                                                << " " << photon_global.largest << ", with "
-                                                                << photon_gather.mean << " " << photon_gather.largest);
+    INFO("relative block differences, mean and largest: sppm "
+         << sppm.mean << " " << sppm.largest << ", photon without final gather " << photon_global.mean << " "
+         << photon_global.largest << ", with " << photon_gather.mean << " " << photon_gather.largest);
     // Measured: sppm 1.2%, photon 1.9% and 2.1% (largest blocks 5% to 8%, the corners' blur); with the caustic photons
     // in the global map too (the caustic counted twice) photon without final gather is 3.9%.
     CHECK(sppm.mean < 0.02);

@@ -84,8 +84,8 @@ TEST_CASE("An area light's photons leave its surface by the cosine with its whol
                 return cos > 0.0 ? cos / kPi : 0.0;
             },
             two_sided ? 12 : 13, draws);
-        INFO((two_sided ? "two-sided" : "one-sided") << ": chi2 " << r.statistic << " dof " << r.dof << " p "
-                                                     << r.p_value << " worst " << r.worst);
+        INFO((two_sided ? "two-sided" : "one-sided")
+             << ": chi2 " << r.statistic << " dof " << r.dof << " p " << r.p_value << " worst " << r.worst);
         CHECK(r.failure.empty());
         CHECK(r.p_value > kLevel);
         CHECK(r.pdf_integral == Approx(1.0).margin(2e-3));
@@ -123,8 +123,8 @@ TEST_CASE("A point light sends photons uniformly over the sphere", "[emission]")
         CHECK(same(s->radiance, RGB(3.0f, 2.0f, 1.0f), 1e-5f));  // the intensity, whichever the direction
         CHECK(same(s->power, e.power(), 1e-5f));                 // 4 pi I
     }
-    const test::ChiSquareResult r =
-        direction_test(e, scene, [](const Vec3&) { return 1.0 / (4.0 * kPi); }, 17, 60000 / test::kSampleScale);
+    const test::ChiSquareResult r = direction_test(
+        e, scene, [](const Vec3&) { return 1.0 / (4.0 * kPi); }, 17, 60000 / test::kSampleScale);
     INFO("chi2 " << r.statistic << " p " << r.p_value);
     CHECK(r.p_value > kLevel);
 }
@@ -209,8 +209,8 @@ TEST_CASE("A uniform environment sends photons from every direction with the pow
         CHECK(glm::length(off - glm::dot(off, s->direction) * s->direction) <= 2.0f * 1.0001f);
         CHECK(same(s->power, env.power(), 1e-5f));
     }
-    const test::ChiSquareResult r =
-        direction_test(env, scene, [](const Vec3&) { return 1.0 / (4.0 * kPi); }, 23, 60000 / test::kSampleScale);
+    const test::ChiSquareResult r = direction_test(
+        env, scene, [](const Vec3&) { return 1.0 / (4.0 * kPi); }, 23, 60000 / test::kSampleScale);
     INFO("chi2 " << r.statistic << " p " << r.p_value);
     CHECK(r.p_value > kLevel);
 }
