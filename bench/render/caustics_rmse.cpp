@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
     load.overrides.width = width;
     load.overrides.height = height;
     LoadedScene scene = load_scene(scene_file, load);
+    if (!scene.assets.empty()) std::fprintf(stderr, "%s\n", describe_sources(scene.assets).c_str());
     RenderJob job = scene.job;
     job.settings.threads = threads;
     job.settings.pattern = PixelPattern::sobol;

@@ -108,9 +108,9 @@ std::vector<Image> sppm_images(const RenderJob& job, std::vector<int> stops) {
 }  // namespace
 
 TEST_CASE("sppm approaches the path tracer's converged Cornell box as it iterates", "[photon_scene]") {
-    // Measured (scripts/charts.sh, docs/data/sppm_convergence.csv): the mean relative block difference falls from
-    // 6.5% after one iteration of 20000 photons to 0.3% after 256. Here: 32 iterations of 10000 photons (about a
-    // second); the difference must fall by a third from 4 to 32 iterations and end below 2.5%.
+    // Measured (scripts/charts.sh --photon, docs/data/sppm_convergence.csv): the mean relative block difference falls
+    // from 7.3% after one iteration of 20000 photons to 0.24% after 1024. Here 32 iterations of 10000 photons (about
+    // a second): 2.3% after 4, 1.0% after 32; the difference must fall by a third and end below 2.5%.
     RenderJob job = cornell_box(false);
     const Image ref = reference("cornell_box.path", job);
     job.photons.photons = 10000;
@@ -143,8 +143,8 @@ TEST_CASE("photon and sppm count no light twice: a glass block's caustic in the 
     INFO("relative block differences, mean and largest: sppm "
          << sppm.mean << " " << sppm.largest << ", photon without final gather " << photon_global.mean << " "
          << photon_global.largest << ", with " << photon_gather.mean << " " << photon_gather.largest);
-    // Measured: sppm 1.2%, photon 1.9% and 2.1% (largest blocks 5% to 8%, the corners' blur); with the caustic photons
-    // in the global map too (the caustic counted twice) photon without final gather is 3.9%.
+    // Measured: sppm 0.9%, photon 1.9% and 2.1% (largest blocks 2% for sppm, 8% for photon: the corners' blur); with
+    // the caustic photons in the global map too (the caustic counted twice) photon without final gather is 3.9%.
     CHECK(sppm.mean < 0.02);
     CHECK(photon_global.mean < 0.03);
     CHECK(photon_gather.mean < 0.03);
