@@ -10,6 +10,8 @@
 #include <rtlab/scene/scene_loader.hpp>
 
 #include <catch2/catch.hpp>
+#include <shared_data.hpp>
+#include <skip.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -148,4 +150,55 @@ TEST_CASE("photon and sppm count no light twice: a glass block's caustic in the 
     CHECK(sppm.mean < 0.02);
     CHECK(photon_global.mean < 0.03);
     CHECK(photon_gather.mean < 0.03);
+}
+
+namespace {
+
+// scenes/caustics.json at 64 x 48: the glass sphere's caustic (what sppm adds to `direct` on the floor under the
+// sphere, in its shadow) is the brightest thing of the floor, far brighter than the floor in the lamp's direct light,
+// and in the sphere's shadow, below the sphere's image.
+void check_caustics(test::DataSource source) {
+    const auto data = test::pinned_data_path(source);
+    if (!data) return test::skip(std::string("scenes/caustics.json: no ") + test::source_name(source) + " data");
+    SceneLoadOptions options;
+    options.use_environment = false;
+    options.data_path = *data;
+    options.overrides.width = 64;
+    options.overrides.height = 48;
+    RenderJob job = load_scene(kSource / "scenes/caustics.json", options).job;
+    job.settings.threads = 2;
+    job.settings.spp = 8;
+    job.photons.photons = 50000;
+    REQUIRE(job.integrator == IntegratorKind::sppm);
+    const Image sppm = render_job(job).image;
+    job.integrator = IntegratorKind::direct;
+    job.settings.spp = 16;
+    const Image direct = render_job(job).image;
+    // The floor in direct light: the 90th percentile of the lower half's direct values (the floor nearest the lamp).
+    std::vector<float> floor;
+    int peak_x = 0, peak_y = 0;
+    float peak = 0.0f;
+    for (int y = 24; y < 48; ++y)
+        for (int x = 0; x < 64; ++x) {
+            floor.push_back(channel_mean(direct.at(x, y)));
+            const float added = channel_mean(sppm.at(x, y)) - channel_mean(direct.at(x, y));
+            if (added > peak) peak = added, peak_x = x, peak_y = y;
+        }
+    std::sort(floor.begin(), floor.end());
+    const float lit = floor[floor.size() * 9 / 10];
+    INFO(test::source_name(source) << ": caustic " << peak << " at (" << peak_x << ", " << peak_y << "), the lit floor "
+                                   << lit << ", direct light there " << channel_mean(direct.at(peak_x, peak_y)));
+    CHECK(peak > 10.0f * lit);                                    // measured: 80 times
+    CHECK(channel_mean(direct.at(peak_x, peak_y)) < 0.2f * lit);  // in the shadow
+    CHECK(peak_x >= 10);
+    CHECK(peak_x <= 24);  // under the sphere's image (the sphere is left of the middle)
+}
+
+}  // namespace
+
+TEST_CASE("scenes/caustics.json: the sphere's caustic under it with the package data", "[photon_scene]") {
+    check_caustics(test::DataSource::packages);
+}
+TEST_CASE("scenes/caustics.json: the sphere's caustic under it with the shared data", "[photon_scene]") {
+    check_caustics(test::DataSource::shared);
 }
