@@ -70,7 +70,9 @@ public:
     /// photon map misses its light). Area lights: a point uniform by area, a cosine-weighted direction about the
     /// front normal (either face, half each, when two-sided); point: uniform over the sphere; spot: uniform in its
     /// cone (Light::emission_cone); directional and environment: a point uniform on the disk of scene.radius
-    /// perpendicular to the direction, centred on the scene's centre pushed scene.radius back towards the light.
+    /// perpendicular to the direction, centred on the scene's centre pushed scene.radius back towards the light. An
+    /// environment map does the same with its direction drawn as sample_li draws it: power = Le / (pdf_direction
+    /// pdf_position), pdf_position = 1 / (pi scene.radius^2).
     virtual std::optional<EmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction,
                                                     const SceneSphere& scene) const;
 };
