@@ -2,7 +2,7 @@
 # Measures speed against accuracy (CSV and JSON lines in docs/data/) and draws the PNG charts in docs/charts/.
 # Each measurement writes docs/data/<name>.meta.json (machine, date, command, what the points are medians
 # of), which the charts print in their footers.
-#   scripts/charts.sh              the short benchmarks (about 3 minutes on 2 cores), then every chart
+#   scripts/charts.sh              the short benchmarks (about 4 minutes on 2 cores), then every chart
 #   scripts/charts.sh --accel      also re-measure the acceleration structures on the shared models (long)
 #   scripts/charts.sh --photon     also measure photon mapping: sppm against the path tracer on the Cornell box and
 #                                  RMSE against time on the caustics scene (long: each renders a path-traced
@@ -31,7 +31,8 @@ meta() {
 if [ "$run" = 1 ]; then
   cmake --preset release >/dev/null
   cmake --build build/release -j"${JOBS:-2}" --target rtlab_geometry_bench rtlab_shading_optics_tradeoff \
-    rtlab_render_aa_tradeoff rtlab_stability_tests $([ "$accel" = 1 ] && echo rtlab_app_accel) \
+    rtlab_shading_microfacet_energy rtlab_render_aa_tradeoff rtlab_stability_tests \
+    $([ "$accel" = 1 ] && echo rtlab_app_accel) \
     $([ "$photon" = 1 ] && echo rtlab_render_sppm_convergence rtlab_render_caustics_rmse)
   mkdir -p "$data"
   scripts/stability.sh >/dev/null  # docs/data/stability.jsonl: leak rates, fallbacks, offsets against scale
@@ -44,6 +45,10 @@ if [ "$run" = 1 ]; then
   $bin/rtlab_shading_optics_tradeoff $data/optics_tradeoff.csv --runs 9
   meta optics_tradeoff "rtlab_shading_optics_tradeoff docs/data/optics_tradeoff.csv --runs 9" \
     "ns: median of 9 runs of 200 passes over 4096 inputs; errors by quadrature (200000 steps, double)"
+
+  $bin/rtlab_shading_microfacet_energy $data/microfacet_energy.csv 2>/dev/null
+  meta microfacet_energy "rtlab_shading_microfacet_energy docs/data/microfacet_energy.csv" \
+    "albedos by deterministic quadrature (adaptive, 1e-7 per starting cell): no timing, no medians"
 
   $bin/rtlab_render_aa_tradeoff $data/antialiasing.csv --runs 3 --width 160
   meta antialiasing "rtlab_render_aa_tradeoff docs/data/antialiasing.csv --runs 3 --width 160" \
@@ -80,3 +85,9 @@ fi
 /usr/bin/python3 scripts/charts/accel_charts.py docs/charts $data/accel_*.csv
 /usr/bin/python3 scripts/charts/tradeoff_charts.py $data docs/charts
 /usr/bin/python3 scripts/charts/photon_charts.py $data docs/charts
+/usr/bin/python3 scripts/charts/shading_charts.py $data docs/charts
+# The Cycles race measures with scripts/peer-cycles.sh (Blender needed); its chart is redrawn from its data here.
+if [ -f $data/peer_cycles.csv ]; then
+  /usr/bin/python3 scripts/charts/peer_cycles.py $data/peer_cycles.csv $data/peer_cycles_summary.csv \
+    $data/peer_cycles.meta.json docs/charts/peer_cycles.png
+fi

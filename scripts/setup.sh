@@ -13,6 +13,7 @@ packages=(
   python3-pil        # the demo's animated GIF (scripts/demo.sh, run with /usr/bin/python3)
   glmark2-data       # the course data without ../shared: the Stanford bunny (data/assets.tsv)
   openuniverse-common # ... and the planet maps and Saturn's ring strip (data/assets.tsv)
+  blender-data       # eight CC0 studio-light HDR maps, envmaps/<name>.exr (data/assets.tsv)
   libglfw3-dev libimgui-dev # rtlab-view (optional: built when found)
   xvfb xauth libgl1-mesa-dri # rtlab-view's window tests: a virtual X server and Mesa's software OpenGL
 )

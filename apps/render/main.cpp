@@ -1,6 +1,7 @@
 // rtlab-render SCENE.json -o OUT.{png,exr,hdr,pfm} [common flags of every rtlab app: --width W --height H --aa MODE
 //   --spp N --aa-threshold T --aa-depth D --depth D --threads N --seed N --tonemap OP --quiet --data-dir DIR...]
-//   [--plugin FILE.so]... [--plugin-dir DIR]... | --list [--verbose]
+//   [--noise E] [--time S] [--uniform] [--variance] [--plugin FILE.so]... [--plugin-dir DIR]... | --list [--verbose]
+// rtlab-render SCENE.json --sample-range A:B -o SHARE.rtshare [...]: one share of a frame, for rtlab-merge.
 // Exit status: 0 rendered, 1 bad scene or failed write (nothing written), 2 bad command line, 130 stopped by
 // Ctrl-C (what was rendered is written).
 #include <rtlab/app/course_app.hpp>
@@ -9,18 +10,112 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/core/param_spec.hpp>
 #include <rtlab/render/image_output.hpp>
+#include <rtlab/render/noise_target.hpp>
+#include <rtlab/render/render_job.hpp>
+#include <rtlab/render/sample_share.hpp>
 #include <rtlab/scene/plugin.hpp>
 #include <rtlab/scene/scene_loader.hpp>
 #include <rtlab/scene/type_listing.hpp>
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
 #include "options.hpp"
+#include "scene_hash.hpp"
 
 namespace {
+
+using rtlab::app::UsageError;
+
+/// The progressive renderer's settings for the job: its seed, threads and tiles.
+rtlab::ProgressiveSettings progressive_settings(const rtlab::RenderSettings& s) {
+    rtlab::ProgressiveSettings p;
+    p.sequence = rtlab::SampleSequence::sobol;
+    p.spp = s.spp;
+    p.seed = s.seed;
+    p.tile_size = s.tile_size;
+    p.threads = s.threads;
+    return p;
+}
+
+/// What --noise, --time and --sample-range need of the scene: the progressive pattern (and for a noise target, an
+/// integrator whose half-images see all its error).
+void check_progressive(const rtlab::app::RenderOptions& options, const rtlab::LoadedScene& scene) {
+    const rtlab::RenderSettings& s = scene.job.settings;
+    const std::string flag = options.sample_range ? "--sample-range" : (options.noise ? "--noise" : "--time");
+    if (s.pattern != rtlab::PixelPattern::sobol)
+        throw UsageError(flag + " needs the progressive pattern: add --aa sobol (" +
+                         (options.common.aa ? "--aa " : "the scene's anti-aliasing is ") +
+                         std::string(rtlab::pixel_pattern_name(s.pattern)) + ")");
+    if (options.sample_range && scene.job.integrator == rtlab::IntegratorKind::sppm)
+        throw UsageError(flag +
+                         ": an sppm iteration builds on the ones before it, so its samples cannot be shared "
+                         "out; use path, direct, whitted or photon");
+    if (!options.sample_range && !rtlab::supports_noise_target(scene.job.integrator))
+        throw UsageError(flag + ": the " + std::string(rtlab::integrator_name(scene.job.integrator)) +
+                         " integrator is biased in a way the half-image estimate cannot see; use path or direct");
+}
+
+/// One share of the frame: samples [A, B) of every pixel into a .rtshare file.
+int render_share(const rtlab::app::RenderOptions& options, const rtlab::LoadedScene& scene,
+                 const std::filesystem::path& output, const rtlab::RenderCallbacks& base) {
+    check_progressive(options, scene);
+    const rtlab::app::SampleRange range = *options.sample_range;
+    const std::uint64_t hash = rtlab::app::scene_hash(options.scene, scene, options.plugins.files);
+    rtlab::ProgressiveSettings p = progressive_settings(scene.job.settings);
+    p.first_sample = range.first;
+    p.spp = static_cast<int>(range.end - range.first);
+    rtlab::ProgressiveCallbacks callbacks;
+    callbacks.progress = base.progress;
+    callbacks.stop = base.stop;
+    const auto radiance = rtlab::make_radiance_source(scene.job, scene.job.integrator, base.stop);
+    const rtlab::ShareRenderResult r = rtlab::render_share(*scene.job.camera, *radiance, p, hash, output, callbacks);
+    const bool stopped = r.end < range.end;
+    if (!options.common.quiet || stopped) {
+        std::FILE* out = options.common.quiet ? stderr : stdout;
+        if (!r.written)
+            fmt::print(out, "rtlab-render: stopped before the first block of {} samples was done: no share written\n",
+                       rtlab::kDefaultBlockSamples);
+        else
+            fmt::print(out, "{}samples {} to {} of {}x{} pixels (scene hash {:016x}, seed {}) to {}{}\n",
+                       stopped ? "rtlab-render: stopped; wrote " : "wrote ", range.first, r.end - 1,
+                       scene.job.camera->width(), scene.job.camera->height(), hash, p.seed, output.string(),
+                       stopped ? fmt::format(" (asked for {} to {})", range.first, range.end - 1) : "");
+    }
+    if (!options.common.quiet) {
+        const rtlab::RenderStats& s = r.stats;
+        fmt::print("rays: {} camera, {} shadow, {} reflected, {} refracted; {} total in {:.3f} s, {:.3g} rays/s\n",
+                   s.rays.camera, s.rays.shadow, s.rays.reflected, s.rays.refracted, s.rays.total(), s.seconds,
+                   s.rays_per_second());
+    }
+    return stopped ? rtlab::app::kExitInterrupted : rtlab::app::kExitDone;
+}
+
+/// Renders to --noise or --time: progressive passes of the halves sequence (rtlab/render/noise_target.hpp).
+rtlab::RenderResult render_target(const rtlab::app::RenderOptions& options, const rtlab::LoadedScene& scene,
+                                  const rtlab::RenderCallbacks& base, rtlab::TargetResult& target) {
+    check_progressive(options, scene);
+    rtlab::ProgressiveSettings p = progressive_settings(scene.job.settings);
+    p.sequence = rtlab::SampleSequence::sobol_halves;
+    rtlab::TargetSettings t;
+    t.noise = options.noise.value_or(0.0);
+    t.seconds = options.seconds.value_or(0.0);
+    t.adaptive = !options.uniform;
+    rtlab::ProgressiveCallbacks callbacks;
+    callbacks.progress = base.progress;
+    callbacks.stop = base.stop;
+    const auto radiance = rtlab::make_radiance_source(scene.job, scene.job.integrator, base.stop);
+    target = rtlab::render_to_target(*scene.job.camera, *radiance, p, t, callbacks);
+    rtlab::RenderResult result;
+    result.image = std::move(target.image);
+    result.samples = target.buffer.counts();
+    result.stats = target.stats;
+    result.buffer = std::make_shared<const rtlab::SampleBuffer>(std::move(target.buffer));
+    return result;
+}
 
 int run(const rtlab::app::RenderOptions& options, const char* argv0) {
     const rtlab::app::CommonOptions& common = options.common;
@@ -52,7 +147,23 @@ int run(const rtlab::app::RenderOptions& options, const char* argv0) {
     rtlab::app::check_sampling(settings, common);
     const std::filesystem::path output = common.output.empty() ? scene.output : common.output;
     if (output.empty()) throw rtlab::Error(options.scene.string() + ": no output: give -o FILE or render.output");
+    if (options.sample_range) {
+        rtlab::app::prepare_output(output);
+        for (const auto& w : scene.warnings) fmt::print(stderr, "rtlab-render: warning: {}\n", w);
+        rtlab::app::StopOnInterrupt interrupt;
+        rtlab::app::ProgressBar bar(stderr, common.quiet);
+        rtlab::RenderCallbacks callbacks;
+        callbacks.stop = &interrupt.flag();
+        if (bar.enabled()) callbacks.progress = [&bar](const rtlab::RenderProgress& p) { bar.update(p); };
+        const int status = render_share(options, scene, output, callbacks);
+        bar.finish();
+        return status;
+    }
     const rtlab::OutputFormat format = rtlab::output_format(output);  // an unknown extension fails now
+    if (options.variance && format != rtlab::OutputFormat::exr)
+        throw UsageError("--variance needs EXR output, and the scene's render.output is " + output.string());
+    if (options.variance && settings.pattern != rtlab::PixelPattern::sobol && !options.noise && !options.seconds)
+        throw UsageError("--variance needs the progressive pattern, whose sums give the variance: add --aa sobol");
     rtlab::app::prepare_output(output);
     for (const auto& w : scene.warnings) fmt::print(stderr, "rtlab-render: warning: {}\n", w);
     if (!common.quiet && !scene.assets.empty()) fmt::print("{}\n", rtlab::describe_sources(scene.assets));
@@ -62,23 +173,41 @@ int run(const rtlab::app::RenderOptions& options, const char* argv0) {
     rtlab::RenderCallbacks callbacks;
     callbacks.stop = &interrupt.flag();
     if (bar.enabled()) callbacks.progress = [&bar](const rtlab::RenderProgress& p) { bar.update(p); };
-    const rtlab::RenderResult result = rtlab::render_job(scene.job, callbacks);
+    rtlab::TargetResult target;
+    const bool to_target = options.noise || options.seconds;
+    const rtlab::RenderResult result =
+        to_target ? render_target(options, scene, callbacks, target) : rtlab::render_job(scene.job, callbacks);
     bar.finish();
     rtlab::ToneReport report;
-    rtlab::write_render_output(result.image, output, scene.tone.get(), &report);
+    const rtlab::Image variance = options.variance ? result.buffer->mean_variance_image() : rtlab::Image();
+    rtlab::write_render_output(result.image, output, scene.tone.get(), &report, options.variance ? &variance : nullptr);
     if (!common.quiet) {
         const rtlab::RenderStats& s = result.stats;
         // spp means nothing to adaptive sampling: its own settings instead.
-        const std::string sampling =
+        std::string sampling =
             settings.pattern == rtlab::PixelPattern::adaptive
                 ? fmt::format("depth {} threshold {}", settings.adaptive.max_depth, settings.adaptive.threshold)
                 : fmt::format("spp {}", settings.spp);
-        fmt::print("{}: {}x{}, {} objects ({}), {} lights, aa {} {}\n", options.scene.string(), result.image.width(),
+        if (to_target) sampling = fmt::format("spp at most {}", settings.spp);
+        fmt::print("{}: {}x{}, {} objects ({}), {} lights{}, aa {} {}\n", options.scene.string(), result.image.width(),
                    result.image.height(), scene.job.scene->object_count(), scene.job.scene->structure(),
-                   scene.job.lights.size(), rtlab::pixel_pattern_name(settings.pattern), sampling);
+                   scene.job.lights.size(), scene.job.environment ? " and an environment" : "",
+                   rtlab::pixel_pattern_name(settings.pattern), sampling);
         fmt::print("rays: {} camera, {} shadow, {} reflected, {} refracted; {} total in {:.3f} s, {:.3g} rays/s\n",
                    s.rays.camera, s.rays.shadow, s.rays.reflected, s.rays.refracted, s.rays.total(), s.seconds,
                    s.rays_per_second());
+        if (to_target) {
+            const rtlab::SampleBuffer& b = *result.buffer;
+            const std::vector<std::uint32_t>& counts = result.samples;
+            const auto [lo, hi] = std::minmax_element(counts.begin(), counts.end());
+            fmt::print(
+                "target: {} after {} passes: estimated relMSE {:.4g}{}; samples {} ({:.4g} per pixel, {} to {}; "
+                "{})\n",
+                rtlab::target_stop_name(target.stop), target.passes, target.estimate,
+                options.noise ? fmt::format(" (target {:.4g})", *options.noise) : "", b.total_samples(),
+                static_cast<double>(b.total_samples()) / static_cast<double>(counts.size()), *lo, *hi,
+                options.uniform ? "uniform" : "adaptive");
+        }
         // Only PNG output is tone-mapped; the linear formats keep the rendered values.
         if (scene.tone && format == rtlab::OutputFormat::png)
             fmt::print("tone: {}\n", report.summary);

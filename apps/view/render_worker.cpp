@@ -3,8 +3,6 @@
 #include <rtlab/core/error.hpp>
 #include <rtlab/render/progressive.hpp>
 #include <rtlab/render/render_job.hpp>
-#include <rtlab/render/sampled_lights.hpp>
-#include <rtlab/render/sppm.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -25,83 +23,17 @@ void lower_this_thread() {
     setpriority(PRIO_PROCESS, tid, 10);
 }
 
-/// A radiance source and whatever it renders through (the integrator object it wraps).
-struct Integrator {
-    std::shared_ptr<const void> owner;
-    std::unique_ptr<RadianceSource> source;
-};
-
-/// The integrators the viewer offers, by name: a new one (direct lighting, path tracing) is one more entry.
-struct IntegratorEntry {
-    std::string name;
-    std::function<Integrator(const RenderJob&, const std::atomic<bool>* stop)> make;
-};
-
-/// direct and path over the scene's sampled lights (emitting shapes, area lights as quads, the background as an
-/// environment), which the integrator refers to: one object owns both.
-struct SampledIntegrator {
-    SampledIntegrator(const RenderJob& job)
-        : sampled(make_sampled_lights(job.scene, job.lights, job.whitted)),
-          integrator(*sampled.scene, sampled.lights, path_options(job)) {}
-    static PathOptions path_options(const RenderJob& job) {
-        PathOptions options = job.path;
-        if (!options.environment) options.environment = job.whitted.environment;
-        return options;
-    }
-    SampledLights sampled;
-    PathIntegrator integrator;
-};
-
-Integrator make_sampled(const RenderJob& job, IntegratorKind kind) {
-    auto owner = std::make_shared<const SampledIntegrator>(job);
-    auto source = std::make_unique<PathRadiance>(owner->integrator, kind);
-    return Integrator{std::move(owner), std::move(source)};
-}
-
-/// photon over the scene's sampled lights: the photon maps are shot and built when the render starts.
-Integrator make_photon(const RenderJob& job, const std::atomic<bool>* stop) {
-    auto sampled = std::make_shared<const SampledLights>(make_sampled_lights(job.scene, job.lights, job.whitted));
-    auto source = std::make_unique<PhotonIntegrator>(*sampled->scene, sampled->lights, sampled->sphere,
-                                                     SampledIntegrator::path_options(job), job.photons,
-                                                     job.settings.seed, 0, stop);
-    return Integrator{std::move(sampled), std::move(source)};
-}
-
-/// sppm is not a radiance source but a renderer of its own (RenderWorker::render_passes drives it); its entry makes
-/// nothing.
-constexpr const char* kSppm = "sppm";
-
-const std::vector<IntegratorEntry>& integrators() {
-    static const std::vector<IntegratorEntry> list{
-        {"whitted",
-         [](const RenderJob& job, const std::atomic<bool>*) {
-             auto whitted = std::make_shared<const WhittedIntegrator>(*job.scene, job.lights, job.whitted);
-             auto source = std::make_unique<WhittedRadiance>(*whitted);
-             return Integrator{std::move(whitted), std::move(source)};
-         }},
-        {"direct",
-         [](const RenderJob& job, const std::atomic<bool>*) { return make_sampled(job, IntegratorKind::direct); }},
-        {"path",
-         [](const RenderJob& job, const std::atomic<bool>*) { return make_sampled(job, IntegratorKind::path); }},
-        {"photon", make_photon},
-        {kSppm, [](const RenderJob&, const std::atomic<bool>*) -> Integrator {
-             throw Error("viewer: sppm renders through its own renderer");
-         }}};
-    return list;
-}
-
-Integrator make_integrator(const std::string& name, const RenderJob& job, const std::atomic<bool>* stop) {
-    for (const auto& entry : integrators())
-        if (entry.name == name) return entry.make(job, stop);
-    throw Error("viewer: unknown integrator '" + name + "'");
-}
+/// The integrators the viewer offers, by name (rtlab::integrator_name's words). All but sppm render through
+/// make_radiance_source; sppm, no radiance source, through make_sppm_renderer, an iteration per pass.
+constexpr IntegratorKind kIntegrators[] = {IntegratorKind::whitted, IntegratorKind::direct, IntegratorKind::path,
+                                           IntegratorKind::photon, IntegratorKind::sppm};
 
 }  // namespace
 
 const std::vector<std::string>& integrator_names() {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> out;
-        for (const auto& entry : integrators()) out.push_back(entry.name);
+        for (const IntegratorKind kind : kIntegrators) out.emplace_back(integrator_name(kind));
         return out;
     }();
     return names;
@@ -258,7 +190,7 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
     settings.seed = choice.seed.value_or(scene->job.settings.seed);
     settings.threads = choice.threads;
     const int width = camera->width(), height = camera->height();
-    auto start_display = [&](const std::string& integrator_name) {
+    auto start_display = [&](const std::string& name) {
         std::lock_guard lock(m_mutex);
         if (m_display.width != width || m_display.height != height) {
             const auto n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
@@ -266,7 +198,7 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
                                       std::vector<std::uint32_t>(n)};
         }
         m_status.rendering = true;
-        m_status.integrator = integrator_name;
+        m_status.integrator = name;
         m_status.passes_done = 0;
         m_status.spp = choice.spp;
         m_status.seconds = 0.0;
@@ -309,25 +241,28 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
     };
     try {
         // No choice yet: the integrator the scene file names, as rtlab-render would use.
-        const std::string integrator_name =
-            choice.integrator.empty() ? std::string(rtlab::integrator_name(scene->job.integrator)) : choice.integrator;
-        if (integrator_name == kSppm) {
+        const std::string integrator =
+            choice.integrator.empty() ? std::string(integrator_name(scene->job.integrator)) : choice.integrator;
+        const auto kind = parse_integrator(integrator);
+        if (!kind) throw Error("viewer: unknown integrator '" + integrator + "'");
+        // The choice's seed and threads for what the job itself does before the passes (photon's maps).
+        RenderJob job = scene->job;
+        job.settings.seed = settings.seed;
+        job.settings.threads = settings.threads;
+        if (*kind == IntegratorKind::sppm) {
             // An iteration is a pass: its camera pass's tiles hold only the direct light, so the window is given the
             // whole image once the iteration's photons are in (no variance: sppm's pixels are no means of samples).
-            const RenderJob& job = scene->job;
-            const SampledLights sampled = make_sampled_lights(job.scene, job.lights, job.whitted);
-            SppmRenderer sppm(*camera, *sampled.scene, sampled.lights, sampled.sphere,
-                              SampledIntegrator::path_options(job), job.photons, settings);
-            sppm.plan_iterations(choice.spp);
-            start_display(kSppm);
+            const auto sppm = make_sppm_renderer(job, *camera, settings);
+            sppm->plan_iterations(choice.spp);
+            start_display(integrator);
             callbacks.tile = [&](const TileUpdate&) {
                 lower_this_thread();
                 std::lock_guard lock(m_mutex);
                 note_first_tile();
             };
             for (int pass = 0; pass < choice.spp; ++pass) {
-                if (!sppm.iterate(callbacks)) break;
-                const Image image = sppm.image();
+                if (!sppm->iterate(callbacks)) break;
+                const Image image = sppm->image();
                 std::lock_guard lock(m_mutex);
                 for (int y = 0; y < height; ++y)
                     for (int x = 0; x < width; ++x) {
@@ -338,16 +273,17 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
                             m_display.mean[3 * i + static_cast<std::size_t>(c)] = m[c];
                             m_display.variance[3 * i + static_cast<std::size_t>(c)] = 0.0f;
                         }
-                        m_display.counts[i] = static_cast<std::uint32_t>(sppm.iterations());
+                        m_display.counts[i] = static_cast<std::uint32_t>(sppm->iterations());
                     }
                 mark_dirty(0, height);
-                if (!pass_done(pass + 1, sppm.stats())) break;
+                if (!pass_done(pass + 1, sppm->stats())) break;
             }
         } else {
-            const Integrator integrator = make_integrator(integrator_name, scene->job, &m_stop);
-            ProgressiveRenderer renderer(*camera, *integrator.source, settings);
+            // photon shoots its maps here; a restart meanwhile sets m_stop, which ends the passes at once too.
+            const auto source = make_radiance_source(job, *kind, &m_stop);
+            ProgressiveRenderer renderer(*camera, *source, settings);
             renderer.plan_passes(choice.spp);
-            start_display(integrator_name);
+            start_display(integrator);
             // Each finished tile is copied out at once: the window shows tiles as they finish.
             callbacks.tile = [&](const TileUpdate& t) {
                 // The worker that rendered the tile (one of TBB's) gets a lower priority too: nice is per thread and

@@ -28,7 +28,7 @@ const std::vector<std::string>& integrator_names();
 
 /// \brief What to render: the viewer's choices on top of the scene file.
 struct RenderChoice {
-    std::string integrator = "whitted";
+    std::string integrator;  ///< empty: the scene's
     SampleSequence sequence = SampleSequence::sobol;
     int spp = 64;                       ///< passes of one sample per pixel until this many
     std::optional<std::uint64_t> seed;  ///< none: the scene's (render.seed or --seed)

@@ -218,3 +218,34 @@ TEST_CASE("apps: Ctrl-C stops every app with status 130 and writes the partial i
         CHECK(partial.height() == 300);
     }
 }
+
+TEST_CASE("apps: Ctrl-C stops a noise target render and a share render with status 130", "[apps]") {
+    const auto dir = test::scratch_dir("apps_interrupt_noise");
+    const std::string cornell = std::string(RTLAB_SOURCE_DIR) + "/scenes/cornell_box.json";
+    // Renders of many seconds on one thread.
+    const std::vector<std::string> slow{cornell, "--width", "96", "--height", "96", "--threads", "1", "--quiet"};
+    auto interrupted = [&](std::vector<std::string> args) {
+        args.insert(args.begin(), slow.begin(), slow.end());
+        int status = 0;
+        for (int delay_ms : {300, 1000, 3000, 10000}) {  // as above: the handler is set once the render starts
+            status = interrupt_after(RENDER_EXE, args, std::chrono::milliseconds(delay_ms));
+            if (!WIFSIGNALED(status)) break;
+        }
+        REQUIRE(WIFEXITED(status));
+        return WEXITSTATUS(status);
+    };
+    const auto image = dir / "noise.pfm";
+    fs::remove(image);
+    CHECK(interrupted({"--noise", "1e-5", "--spp", "65536", "-o", image.string()}) == 130);
+    CHECK(fs::is_regular_file(image));
+    // A share keeps the blocks it finished (none when stopped within the first): whatever it wrote merges.
+    const auto share = dir / "stopped.rtshare";
+    fs::remove(share);
+    CHECK(interrupted({"--sample-range", "0:65536", "-o", share.string()}) == 130);
+    if (fs::exists(share)) {
+        const auto run = run_app(MERGE_EXE, shell_quoted(share) + " -o " + shell_quoted(dir / "merged.pfm"), dir);
+        CHECK(run.status == 0);
+    }
+    for (const auto& entry : fs::directory_iterator(dir))  // no temporary file left behind
+        CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);
+}

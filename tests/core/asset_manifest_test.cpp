@@ -14,6 +14,8 @@ TEST_CASE("the data packages' images have the sizes the manifest gives", "[data_
     int checked = 0;
     for (const AssetEntry& e : asset_manifest()) {
         if (!e.from_package() || e.expected.find('x') == std::string::npos) continue;
+        // OpenEXR maps are read by rtlab::render (tests/render/environment_files_test.cpp checks them).
+        if (e.file.extension() == ".exr") continue;
         if (!std::filesystem::is_regular_file(e.file)) continue;
         const Image image = read_image(e.file, ColorEncoding::srgb);
         INFO(e.file.string());

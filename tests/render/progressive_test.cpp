@@ -112,7 +112,7 @@ TEST_CASE("N spp gives exactly N samples in every pixel from the first sample as
         for (std::uint32_t c : r.buffer.counts()) CHECK(c == static_cast<std::uint32_t>(spp));
         CHECK(r.buffer.next_sample(8, 4) == static_cast<std::uint32_t>(5 + spp));
         // Samples 5.. have parities odd, even, odd...: the odd half gets the extra one.
-        CHECK(r.buffer.at(3, 2).count[1] == static_cast<std::uint32_t>((spp + 1) / 2));
+        CHECK(r.buffer.at(3, 2).count(1) == static_cast<std::uint32_t>((spp + 1) / 2));
         CHECK(r.stats.rays.camera == 45u * static_cast<std::uint64_t>(spp));
     }
     CHECK_THROWS_AS(render_progressive(camera, scene, settings_for(0, 0, 1)), Error);
@@ -140,8 +140,7 @@ TEST_CASE("a sample range rendered alone holds the same samples as in a whole re
         for (int x = 0; x < 6; ++x)
             for (int c = 0; c < 3; ++c) {
                 CHECK(merged.mean(x, y)[c] == Approx(whole.image.at(x, y)[c]).epsilon(1e-6).margin(1e-7));
-                CHECK(merged.at(x, y).sum_squares[static_cast<std::size_t>(c)] ==
-                      Approx(whole.buffer.at(x, y).sum_squares[static_cast<std::size_t>(c)]).epsilon(1e-12));
+                CHECK(merged.at(x, y).sum_squares(c) == Approx(whole.buffer.at(x, y).sum_squares(c)).epsilon(1e-12));
             }
     CHECK_THROWS_AS(merged.merge(SampleBuffer(5, 4)), Error);
 }

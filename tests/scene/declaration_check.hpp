@@ -129,6 +129,7 @@ inline std::vector<TypeSample> type_samples(const Samples& s) {
         {"texture", "cubemap", {{"folder", s.dir.string()}, {"extension", std::string("png")}}, {"bake_size"}},
         {"shape", "mesh", {{"filename", s.mesh.string()}}, {}},
         {"shape", "box", {{"max", Params::List{1.0, 1.0, 1.0}}}, {}},
+        {"environment", "envmap", {{"filename", s.image.string()}}, {}},
     };
 }
 
@@ -197,6 +198,13 @@ inline std::vector<float> behaviour(const Shape& shape) {
     std::vector<float> out;
     add(out, box.lo);
     add(out, box.hi);
+    return out;
+}
+
+inline std::vector<float> behaviour(const EnvironmentEmitter& environment) {
+    std::vector<float> out;
+    for (const TextureLookup& q : kLookups) add(out, environment.radiance(q.direction));
+    add(out, environment.power());
     return out;
 }
 

@@ -24,6 +24,7 @@ TEST_CASE("every built-in type reads exactly the keys it declares", "[declaratio
     check_registry(r.textures, samples);
     check_registry(r.lights, samples);
     check_registry(r.tone_operators, samples);
+    check_registry(r.environments, samples);
 }
 
 TEST_CASE("a factory reading an undeclared key is caught", "[declarations]") {

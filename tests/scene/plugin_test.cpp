@@ -309,7 +309,7 @@ TEST_CASE("a module with a wrong record is refused naming the field, the expecte
     const std::vector<std::pair<std::string, std::vector<std::string>>> cases{
         {"abi",
          {"plugin ABI version: expected " + std::to_string(RTLAB_PLUGIN_ABI_VERSION) + ", got " +
-          std::to_string(RTLAB_PLUGIN_ABI_VERSION + 98)}},
+          std::to_string(RTLAB_PLUGIN_ABI_VERSION + 98)}},  // plugins/wrong_record.cpp
         {"headers",
          {"public headers hash: expected '" + std::string(host.headers_hash) + "', got '" + std::string(64, '0') +
           "'"}},

@@ -125,3 +125,30 @@ TEST_CASE("scene file cornell_box.json shows the red wall on the left and the gr
     CHECK(right.g > 2.0f * right.r);
     CHECK(left.r > 0.5f);
 }
+
+TEST_CASE("scene file bunny_envmap.json: the map's sun from the front right casts the bunny's shadow to the left",
+          "[scene_files]") {
+    // Path traced small and short (64 x 48, 16 samples, 3 bounces) from the packages' bunny and city.exr: the floor
+    // left of the bunny lies in its shadow, the floor right of it in the sun (the orientation of docs/scene-format.md).
+    const auto root = test::data_root(test::DataSource::packages);
+    if (!root) return test::skip("scenes/bunny_envmap.json: the data packages are not installed");
+    SceneLoadOptions options;
+    options.use_environment = false;
+    options.data_dirs = {*root};
+    options.overrides.width = 64;
+    options.overrides.height = 48;
+    options.overrides.spp = 16;
+    options.overrides.max_depth = 3;
+    const LoadedScene scene = load_scene(kSource / "scenes/bunny_envmap.json", options);
+    REQUIRE(scene.job.environment);
+    const Image image = render_job(scene.job).image;
+    double shadow = 0.0, sunlit = 0.0;
+    for (int y = 33; y < 39; ++y)
+        for (int x = 0; x < 16; ++x) {
+            shadow += image.at(8 + x, y).luminance();
+            sunlit += image.at(44 + x, y).luminance();
+        }
+    INFO("floor left of the bunny " << shadow / 96 << ", right of it " << sunlit / 96);
+    CHECK(shadow < 0.75 * sunlit);
+    CHECK(sunlit / 96 > 0.5);
+}

@@ -3,17 +3,18 @@
 #include <rtlab/core/rng.hpp>
 #include <rtlab/shading/material.hpp>
 #include <rtlab/shading/optics.hpp>
+#include <rtlab/shading_testing/statistics.hpp>
 
 #include <catch2/catch.hpp>
 
 #include "sampled_material_cases.hpp"
-#include "sampling_stats.hpp"
 
 #include <optional>
 #include <string>
 
 using namespace rtlab;
 using namespace rtlab::test;
+using namespace rtlab::shading_testing;
 
 namespace {
 

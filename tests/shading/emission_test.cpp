@@ -1,12 +1,14 @@
 // Photons leaving lights (Emitter::sample_le): where they start, the directions against their densities (chi-square),
 // and the power each stands for, whose mean is the light's emitted power (exactly where the sampling makes every
 // photon alike, within 3 standard errors where it does not).
-#include "sampling_stats.hpp"
-
 #include <rtlab/core/frame.hpp>
 #include <rtlab/core/rng.hpp>
 #include <rtlab/shading/emitter.hpp>
 #include <rtlab/shading/light.hpp>
+#include <rtlab/shading_testing/chi_square.hpp>
+#include <rtlab/shading_testing/statistics.hpp>
+
+#include "sample_scale.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -14,6 +16,12 @@
 #include <memory>
 
 using namespace rtlab;
+
+namespace rtlab::test {
+using shading_testing::chi_square_test;
+using shading_testing::ChiSquareResult;
+using shading_testing::sidak_level;
+}  // namespace rtlab::test
 
 namespace {
 

@@ -3,8 +3,9 @@
 // values (exponents, alphas) and incident angles from normal to grazing (cos theta <= 0.05), on both sides.
 #include <rtlab/core/params.hpp>
 #include <rtlab/shading/material.hpp>
+#include <rtlab/shading_testing/bsdf_check.hpp>
 
-#include "sampling_stats.hpp"
+#include "sample_scale.hpp"
 
 #include <memory>
 #include <string>
@@ -27,7 +28,7 @@ inline std::shared_ptr<const Material> make_material(const std::string& type, Pa
 
 /// Incident cosines: normal, oblique, grazing (<= 0.05) above, and from below (opaque models are two-sided,
 /// dielectrics are entered from inside, beyond the critical angle too).
-inline std::vector<float> opaque_cosines() { return {1.0f, 0.8f, 0.5f, 0.2f, 0.04f, -0.6f}; }
+inline std::vector<float> opaque_cosines() { return shading_testing::BsdfCheckOptions{}.cosines; }
 inline std::vector<float> dielectric_cosines() { return {1.0f, 0.7f, 0.3f, 0.05f, -0.9f, -0.6f, -0.05f}; }
 
 /// The glossy models at three shape values each, from wide to a lobe narrower than a degree.
@@ -65,17 +66,6 @@ inline std::vector<MaterialCase> glossy_cases() {
 }
 
 /// The incident direction for cosine c, at an azimuth off the axes (Ashikhmin-Shirley is anisotropic).
-inline Vec3 incident(float c) { return direction_at(c, 0.3); }
-
-/// Where narrow lobes peak for wo: the mirror direction and the straight refractions for ior 1.5.
-inline std::vector<Vec3> lobe_hints(const Vec3& wo) {
-    std::vector<Vec3> hints{Vec3(-wo.x, -wo.y, wo.z)};
-    for (float eta : {1.0f / 1.5f, 1.5f}) {
-        const float cos2_t = 1.0f - eta * eta * (1.0f - wo.z * wo.z);
-        if (cos2_t > 0.0f)
-            hints.emplace_back(-eta * wo.x, -eta * wo.y, wo.z > 0.0f ? -std::sqrt(cos2_t) : std::sqrt(cos2_t));
-    }
-    return hints;
-}
+inline Vec3 incident(float c) { return shading_testing::incident_direction(c); }
 
 }  // namespace rtlab::test

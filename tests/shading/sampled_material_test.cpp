@@ -1,19 +1,21 @@
 // Chi-square goodness of fit of every built-in material's sampled directions against its pdf, with the
-// pdf's integral (1, or less where draws are lost below the horizon) checked on the way.
+// pdf's integral (1, or less where draws are lost below the horizon) checked on the way: the checks of
+// rtlab::shading_testing (rtlab/shading_testing/bsdf_check.hpp), which a plugin's test runs the same way.
 #include <rtlab/core/rng.hpp>
 #include <rtlab/shading/material.hpp>
+#include <rtlab/shading_testing/bsdf_check.hpp>
+#include <rtlab/shading_testing/statistics.hpp>
 
 #include <catch2/catch.hpp>
 
 #include "sampled_material_cases.hpp"
-#include "sampling_stats.hpp"
 
 #include <cstdlib>
-#include <optional>
 #include <string>
 
 using namespace rtlab;
 using namespace rtlab::test;
+using namespace rtlab::shading_testing;
 
 namespace {
 
@@ -35,21 +37,11 @@ TEST_CASE("every sampled material draws directions distributed as its pdf", "[sh
     for (const MaterialCase& m : glossy_cases()) {
         const SurfaceTerms t = m.material->terms(TextureLookup{});
         for (float c : m.transmits ? dielectric_cosines() : opaque_cosines()) {
-            const Vec3 wo = incident(c);
             Rng rng(0x5eedf00dULL, ++stream);
-            const auto sample = [&](Rng& r) -> std::optional<Vec3> {
-                const float uc = r.uniform();
-                const Vec2 u = r.uniform2();
-                const std::optional<BsdfSample> s = m.material->sample(t, wo, uc, u, TransportMode::radiance);
-                if (!s || (s->flags & kLobeSpecular)) return std::nullopt;
-                return s->wi;
-            };
             if (std::getenv("RTLAB_CHI2_ONLY") && m.label.find(std::getenv("RTLAB_CHI2_ONLY")) == std::string::npos)
                 continue;
-            const auto pdf = [&](const Vec3& wi) {
-                return static_cast<double>(m.material->pdf(t, wo, wi, TransportMode::radiance));
-            };
-            const ChiSquareResult r = chi_square_test(sample, pdf, lobe_hints(wo), rng, n);
+            const ChiSquareResult r =
+                chi_square_directions(*m.material, t, incident(c), TransportMode::radiance, rng, n);
             INFO(m.label << " cos_o " << c << ": chi2 " << r.statistic << " dof " << r.dof << " p " << r.p_value
                          << " (level " << level << ") pdf integral " << r.pdf_integral << " outside "
                          << r.samples_outside << " " << r.failure << "; worst " << r.worst);

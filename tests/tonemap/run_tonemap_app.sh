@@ -1,6 +1,6 @@
 #!/bin/sh
 # rtlab-tonemap end to end: a 2x1 PFM (grey 1 and grey 100, little-endian floats) is mapped with every
-# operator to a PNG; a missing input must fail with status 1 and name the file, a bad flag with status 2 (the
+# operator to a PNG, an EXR (when blender-data is installed) with one; a missing input must fail with status 1 and name the file, a bad flag with status 2 (the
 # exit statuses of every rtlab app).
 set -eu
 app=$1
@@ -16,6 +16,12 @@ for op in ward reinhard exposure aces; do
 done
 grep -q "log-average luminance 10" "$work/reinhard.txt"   # exp((ln 1 + ln 100) / 2) = 10
 grep -q "reinhard: key 0.18, " "$work/reinhard.txt"        # the float parameter in its shortest form
+# OpenEXR input (a DWAB-compressed studio map of blender-data, when installed).
+exr=/usr/share/blender/datafiles/studiolights/world/studio.exr
+if [ -f "$exr" ]; then
+  "$app" "$exr" -o "$work/studio.png" --op reinhard > "$work/exr.txt"
+  grep -q "studio.exr: 1024x512, log-average luminance" "$work/exr.txt"
+fi
 status=0
 "$app" "$work/missing.pfm" -o "$work/x.png" --op ward 2> "$work/err.txt" || status=$?
 [ "$status" = 1 ] || { echo "a missing input must fail with status 1, not $status"; exit 1; }

@@ -7,6 +7,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -187,14 +188,27 @@ void CommandLine::add_positional(const std::string& name, std::string& target, c
     m_app.add_option(name, target, help)->expected(1);
 }
 
+void CommandLine::add_positionals(const std::string& name, std::vector<fs::path>& target, const std::string& help) {
+    m_app
+        .add_option_function<std::vector<std::string>>(
+            name, [&target](const std::vector<std::string>& values) { target.assign(values.begin(), values.end()); },
+            help)
+        ->expected(0, std::numeric_limits<int>::max());
+}
+
 void CommandLine::add_common(CommonOptions& o, const std::vector<std::string>& tone_operators) {
     std::string& output = m_raw.emplace_back(o.output.string());  // the text; the check sets o.output
+    std::string others;
+    for (const auto& e : o.other_outputs) others += ", " + e;
     add_text(
         "-o,--output", output,
-        "output image: .png (tone-mapped, sRGB), .exr, .hdr or .pfm (linear)" +
+        "output image: .png (tone-mapped, sRGB), .exr, .hdr or .pfm (linear)" + others +
             (o.output.empty() ? std::string("; default: the scene's render.output") : "; default " + o.output.string()),
         [&o](const std::string& raw) {
-            (void)output_format(raw);  // an unknown extension fails now, not after the render
+            const std::string extension = fs::path(raw).extension().string();
+            const bool other =
+                std::find(o.other_outputs.begin(), o.other_outputs.end(), extension) != o.other_outputs.end();
+            if (!other) (void)output_format(raw);  // an unknown extension fails now, not after the render
             o.output = raw;
         });
     const std::optional<int> default_width = o.width, default_height = o.height;

@@ -134,6 +134,10 @@ Image read_image(const std::filesystem::path& path, ColorEncoding encoding) {
     const std::vector<unsigned char> bytes = read_binary_file(path);
     if (bytes.empty()) fail(path, "empty file");
     if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f')) return decode_pfm(bytes, path);
+    if (bytes.size() >= 4 && bytes[0] == 0x76 && bytes[1] == 0x2f && bytes[2] == 0x31 && bytes[3] == 0x01)
+        fail(path,
+             "an OpenEXR file, which rtlab::core does not read (it reads PNG, JPG, BMP, TGA, HDR and PFM); "
+             "rtlab::render reads EXR (read_image_file, read_exr), as a scene's environment does");
     if (bytes.size() > static_cast<std::size_t>(INT_MAX)) fail(path, "image file too large");
     detail::check_not_truncated(bytes, path);
     const int size = static_cast<int>(bytes.size());

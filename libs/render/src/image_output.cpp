@@ -54,7 +54,7 @@ std::filesystem::path temporary_path(const std::filesystem::path& path) {
     return tmp;
 }
 
-void write_format(const Image& image, OutputFormat format, const std::filesystem::path& path) {
+void write_format(const Image& image, OutputFormat format, const std::filesystem::path& path, const Image* variance) {
     switch (format) {
         case OutputFormat::png:
             return write_png(image, path);
@@ -63,23 +63,25 @@ void write_format(const Image& image, OutputFormat format, const std::filesystem
         case OutputFormat::pfm:
             return write_pfm(image, path);
         case OutputFormat::exr:
-            return write_exr(image, path);
+            return write_exr(image, path, variance);
     }
 }
 
 }  // namespace
 
 void write_render_output(const Image& hdr, const std::filesystem::path& path, const ToneOperator* tone,
-                         ToneReport* report) {
+                         ToneReport* report, const Image* variance) {
     const OutputFormat format = output_format(path);
     if (hdr.empty()) throw Error(file_error_message(path, "cannot write an empty image"));
+    if (variance && format != OutputFormat::exr)
+        throw Error(file_error_message(path, "only an EXR file can carry a variance channel"));
     Image display;
     if (format == OutputFormat::png) display = tone ? tone->apply(hdr, report) : clamp_display(hdr);
     const Image& out = format == OutputFormat::png ? display : hdr;
 
     const std::filesystem::path tmp = temporary_path(path);
     try {
-        write_format(out, format, tmp);
+        write_format(out, format, tmp, variance);
         std::error_code ec;
         std::filesystem::rename(tmp, path, ec);
         if (ec) throw Error(file_error_message(path, "cannot replace it with the finished image: " + ec.message()));

@@ -11,11 +11,8 @@
 
 namespace rtlab {
 
-using detail::bounce_pair;
-using detail::find_vertex;
 using detail::GatherHit;
 using detail::GatherPoint;
-using detail::SurfaceVertex;
 
 void check_photon_options(const PhotonOptions& o) {
     if (o.photons < 1) throw Error("photons: count must be >= 1");
@@ -84,7 +81,7 @@ RGB PhotonIntegrator::sample_radiance(const CameraSample& sample, RayCounters& c
 
 // The reflected radiance at v from one map's photons that make paths of at most max_depth scattering events with
 // v at scattering index `bounce`; per photon shot.
-RGB PhotonIntegrator::density(const PhotonMap& map, const SurfaceVertex& v, std::uint32_t bounce) const {
+RGB PhotonIntegrator::density(const PhotonMap& map, const PathVertex& v, std::uint32_t bounce) const {
     if (map.empty() || m_shot == 0) return {};
     const long allowed = static_cast<long>(m_path.max_depth) - static_cast<long>(bounce) - 1;
     if (allowed < 0) return {};
@@ -123,14 +120,14 @@ RGB PhotonIntegrator::estimate(const Ray& camera_ray, const SampleStream& stream
     // only when they draw a non-delta lobe, weighed by 1 / chance as the point itself is.
     RGB indirect = gather_ray(detail::WalkStart{first.ray, gp->beta * gp->sample.value, gp->bounce + 1, false, &first},
                               stream, stats);
-    const SurfaceVertex& v = gp->v;
+    const PathVertex& v = gp->v;
     for (int g = 1; g < m_options.gather; ++g) {
         SampleKey key = stream.key();
         key.bounce = static_cast<std::uint32_t>(g);
         const SampleStream own(SampleSequence::independent, key);
         const std::optional<BsdfSample> s =
-            v.info.material->sample(v.terms, v.wo_local, own.get2d(bounce_pair(gp->bounce, 3)).x,
-                                    own.get2d(bounce_pair(gp->bounce, 2)), TransportMode::radiance);
+            v.info.material->sample(v.terms, v.wo_local, own.get2d(path_pair(gp->bounce, 3)).x,
+                                    own.get2d(path_pair(gp->bounce, 2)), TransportMode::radiance);
         if (!s || (s->flags & kLobeSpecular)) continue;
         if (s->flags & kLobeTransmission)
             ++stats.refracted;

@@ -13,9 +13,6 @@ namespace rtlab {
 
 namespace {
 
-using detail::find_vertex;
-using detail::SurfaceVertex;
-
 // Photons per task: enough work to hide the task's cost, few enough that 2 threads stay busy to the end.
 constexpr std::uint32_t kBlockPhotons = 1024;
 
@@ -51,8 +48,8 @@ public:
         ++rays.reflected;
         bool all_pass = true;  // every event so far a pass-through one (PhotonPath)
         for (int bounce = 0; bounce < m_settings.max_depth; ++bounce) {
-            SurfaceVertex v;
-            if (!find_vertex(m_scene, ray, v)) return;
+            PathVertex v;
+            if (!find_path_vertex(m_scene, ray, v)) return;
             beta *= v.absorbed;
             const Material& material = *v.info.material;
             const bool gather_vertex = detail::is_gather_vertex(v);

@@ -11,6 +11,20 @@
 
 namespace rtlab {
 
+/// Where each pixel's samples end in a pass: one index for all, or one per pixel (row-major).
+struct ProgressiveRenderer::Ends {
+    std::uint32_t all = 0;
+    const std::uint32_t* per_pixel = nullptr;
+    int width = 0;
+    std::uint32_t max = 0;
+
+    std::uint32_t at(int x, int y) const {
+        return per_pixel ? per_pixel[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                                     static_cast<std::size_t>(x)]
+                         : all;
+    }
+};
+
 namespace {
 
 using detail::stopped;
@@ -21,6 +35,7 @@ void check_settings(const Camera& camera, const ProgressiveSettings& s) {
     if (s.pass_samples < 0)
         throw Error("progressive render: samples per pass must be >= 0 (0: all in one pass), got " +
                     std::to_string(s.pass_samples));
+    if (s.block_samples < 1) throw Error("progressive render: the block size must be at least 1 sample");
 }
 
 /// The samples a tile adds in one pass: sample-major (index outer), so that each group handed to the radiance
@@ -31,11 +46,17 @@ public:
              SampleBuffer& buffer)
         : m_camera(camera), m_radiance(radiance), m_settings(settings), m_buffer(buffer) {}
 
-    /// False when stopped before every pixel of the tile reached `end`.
-    bool render(const Tile& t, std::uint32_t end, const RenderCallbacks& callbacks, RayCounters& counters) {
-        std::uint32_t begin = end;
+    /// False when stopped before every pixel of the tile reached its end.
+    template <class Ends>
+    bool render(const Tile& t, const Ends& ends, const RenderCallbacks& callbacks, RayCounters& counters) {
+        std::uint32_t begin = 0xffffffffu, end = 0;
         for (int y = t.y0; y < t.y1; ++y)
-            for (int x = t.x0; x < t.x1; ++x) begin = std::min(begin, m_buffer.next_sample(x, y));
+            for (int x = t.x0; x < t.x1; ++x) {
+                const std::uint32_t e = ends.at(x, y), next = m_buffer.next_sample(x, y);
+                if (next >= e) continue;
+                begin = std::min(begin, next);
+                end = std::max(end, e);
+            }
         const std::size_t group = 2 * static_cast<std::size_t>(t.x1 - t.x0);
         m_samples.reserve(group);
         m_pixels.reserve(group);
@@ -48,7 +69,8 @@ public:
                 for (int yy = y; yy < std::min(y + 2, t.y1); ++yy)
                     for (int x = t.x0; x < t.x1; ++x)
                         // Only the sample a pixel needs next: each pixel's sums take its samples in order.
-                        if (m_buffer.next_sample(x, yy) == i) add_camera_sample(x, yy, i, counters);
+                        if (m_buffer.next_sample(x, yy) == i && i < ends.at(x, yy))
+                            add_camera_sample(x, yy, i, counters);
                 if (m_samples.empty()) continue;
                 m_radiance.radiance_batch(m_samples, std::span<RGB>(m_values.data(), m_samples.size()), counters);
                 for (std::size_t k = 0; k < m_samples.size(); ++k)
@@ -86,7 +108,7 @@ ProgressiveRenderer::ProgressiveRenderer(const Camera& camera, const RadianceSou
     : m_camera(camera), m_radiance(radiance), m_settings(settings) {
     check_settings(camera, settings);
     m_tile_size = settings.tile_size > 0 ? settings.tile_size : auto_tile_size(camera.width(), camera.height());
-    m_buffer = SampleBuffer(camera.width(), camera.height(), settings.first_sample);
+    m_buffer = SampleBuffer(camera.width(), camera.height(), settings.first_sample, settings.block_samples);
 }
 
 int ProgressiveRenderer::tiles_per_pass() const {
@@ -98,6 +120,27 @@ void ProgressiveRenderer::plan_passes(int passes) {
 }
 
 bool ProgressiveRenderer::render_to(std::uint32_t end, const ProgressiveCallbacks& callbacks, int pass) {
+    Ends ends;
+    ends.all = end;
+    ends.max = end;
+    return render_pass(ends, callbacks, pass);
+}
+
+bool ProgressiveRenderer::render_to(const std::vector<std::uint32_t>& end, const ProgressiveCallbacks& callbacks,
+                                    int pass) {
+    const std::size_t pixels = static_cast<std::size_t>(m_camera.width()) * static_cast<std::size_t>(m_camera.height());
+    if (end.size() != pixels)
+        throw Error("progressive render: " + std::to_string(end.size()) + " sample ends for " + std::to_string(pixels) +
+                    " pixels");
+    Ends ends;
+    ends.per_pixel = end.data();
+    ends.width = m_camera.width();
+    for (const std::uint32_t e : end) ends.max = std::max(ends.max, e);
+    return render_pass(ends, callbacks, pass);
+}
+
+bool ProgressiveRenderer::render_pass(const Ends& ends, const ProgressiveCallbacks& callbacks, int pass) {
+    const std::uint32_t end = ends.max;
     const auto start = std::chrono::steady_clock::now();
     const detail::TileGrid grid(m_camera.width(), m_camera.height(), m_tile_size);
     m_stats.tiles_total = std::max(m_stats.tiles_total, m_stats.tiles_done + grid.count());
@@ -115,7 +158,7 @@ bool ProgressiveRenderer::render_to(std::uint32_t end, const ProgressiveCallback
         const Tile tile = grid.tile(index);
         RayCounters counters;
         TilePass tile_pass(m_camera, m_radiance, m_settings, m_buffer);
-        const bool complete = tile_pass.render(tile, end, callbacks, counters);
+        const bool complete = tile_pass.render(tile, ends, callbacks, counters);
         std::lock_guard lock(mutex);
         totals += counters;
         if (!complete) return;

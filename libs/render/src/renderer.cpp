@@ -201,6 +201,7 @@ RenderResult render_sobol(const Camera& camera, const RadianceSource& radiance, 
     ProgressiveCallbacks cb;
     cb.progress = callbacks.progress;
     cb.stop = callbacks.stop;
+    cb.deadline = callbacks.deadline;
     ProgressiveResult r = render_progressive(camera, radiance, p, cb);
     RenderResult result;
     result.image = std::move(r.image);

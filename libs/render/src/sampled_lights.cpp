@@ -103,7 +103,8 @@ std::shared_ptr<const AreaEmitter> make_area_emitter(const SceneObject& object) 
 
 SampledLights make_sampled_lights(std::shared_ptr<const Scene> scene,
                                   const std::vector<std::shared_ptr<const Light>>& lights,
-                                  const WhittedOptions& whitted) {
+                                  const WhittedOptions& whitted,
+                                  std::shared_ptr<const EnvironmentEmitter> environment) {
     if (!scene) throw Error("sampled lights: no scene");
     if (whitted.convention == Convention::classic)
         throw Error("convention: 'classic' is not physical; the direct and path integrators need 'physical'");
@@ -138,7 +139,9 @@ SampledLights make_sampled_lights(std::shared_ptr<const Scene> scene,
     }
     for (const SceneObject& object : scene->objects())
         if (auto emitter = make_area_emitter(object)) out.lights.add(std::move(emitter), object.shape.get());
-    if (!whitted.environment && !whitted.background.is_black())
+    if (environment)
+        out.lights.set_environment(environment->for_scene_radius(radius));
+    else if (!whitted.environment && !whitted.background.is_black())
         out.lights.set_environment(std::make_shared<UniformEnvironment>(whitted.background, radius));
     out.lights.finish();
     out.sphere = SceneSphere{scene->bounds().is_empty() ? Point3(0.0f) : scene->bounds().center(), radius};

@@ -25,7 +25,11 @@ struct TileGrid {
     }
 };
 
-inline bool stopped(const RenderCallbacks& cb) { return cb.stop && cb.stop->load(std::memory_order_relaxed); }
+inline bool stopped(const RenderCallbacks& cb) {
+    if (cb.stop && cb.stop->load(std::memory_order_relaxed)) return true;
+    return cb.deadline != std::chrono::steady_clock::time_point::max() &&
+           std::chrono::steady_clock::now() >= cb.deadline;
+}
 
 /// Throws rtlab::Error, prefixed by `who`, for a non-positive image size, a negative tile size or thread count.
 void check_tile_settings(const char* who, const Camera& camera, int tile_size, int threads);

@@ -16,6 +16,8 @@ const char* kind_name(Kind k) {
             return "light";
         case Kind::tone:
             return "tone operator";
+        case Kind::environment:
+            return "environment";
         default:
             return "shape";
     }

@@ -18,7 +18,7 @@
 namespace rtlab::scene_detail {
 
 /// The categories of named objects; each has its own names and its own registry.
-enum class Kind { texture, material, light, shape, tone };
+enum class Kind { texture, material, light, shape, tone, environment };
 const char* kind_name(Kind kind);
 
 /// A named object and where it was defined; a null object when building it failed (its error is reported

@@ -9,6 +9,7 @@ SceneRegistries SceneRegistries::builtins() {
     register_builtins(r.lights);
     register_builtins(r.shapes);
     register_builtins(r.tone_operators);
+    register_builtins(r.environments);
     return r;
 }
 

@@ -220,8 +220,17 @@ void read_whitted(LoadContext& ctx, const Json& r, const std::string& p) {
     }
     if (r.contains("background") && r.contains("skybox"))
         ctx.error(at("skybox"), "give 'background' or 'skybox', not both");
+    for (const char* other : {"background", "skybox"})
+        if (r.contains("environment") && r.contains(other))
+            ctx.error(at("environment"), std::string("give 'environment' or '") + other + "', not both");
     if (r.contains("background"))
         if (auto c = read_colour(ctx.diag, r["background"], at("background"))) whitted.background = *c;
+    if (r.contains("environment")) {
+        const Json& e = r["environment"];
+        if (expect_object(ctx.diag, e, at("environment"), "an environment ({\"type\": \"envmap\", ...})"))
+            ctx.out.job.environment =
+                build_object(ctx, ctx.registries.environments, Kind::environment, e, at("environment"));
+    }
     if (!r.contains("skybox")) return;
     const Json& sky = r["skybox"];
     if (sky.is_string()) {
@@ -349,9 +358,10 @@ void read_render(LoadContext& ctx, const Json& doc, const std::optional<CameraRe
     const Json empty = Json::object();
     const Json& r = doc.contains("render") ? doc["render"] : empty;
     if (!expect_object(ctx.diag, r, p, "the render settings")) return;
-    check_keys(ctx.diag, r, p,
-               {"width", "height", "aa", "spp", "max_depth", "background", "skybox", "tonemap", "convention", "seed",
-                "output", "threads", "min_weight", "max_crossings", "integrator", "roulette_depth", "photons"});
+    check_keys(
+        ctx.diag, r, p,
+        {"width", "height", "aa", "spp", "max_depth", "background", "skybox", "environment", "tonemap", "convention",
+         "seed", "output", "threads", "min_weight", "max_crossings", "integrator", "roulette_depth", "photons"});
     std::int64_t width = 640, height = 480;
     const bool size_ok = read_size(ctx, r, p, width, height);
     read_sampling(ctx, r, p);

@@ -15,6 +15,7 @@ void each_registry(const SceneRegistries& r, F&& f) {
     f("lights", r.lights);
     f("shapes", r.shapes);
     f("tone operators", r.tone_operators);
+    f("environments", r.environments);
 }
 
 // The shared groups of a registry's types, each with its parameters (taken from the first type using it).

@@ -71,6 +71,19 @@ std::optional<EmissionSample> AreaEmitter::sample_le(const Vec2& u_position, con
     return s;
 }
 
+std::optional<EmissionSample> EnvironmentEmitter::sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                                            const SceneSphere& scene) const {
+    // sample_li's answer does not depend on the point for a light at infinity: its direction towards the light
+    // and density are those of the photon's (reversed) direction.
+    const std::optional<EmitterSample> li = sample_li(scene.centre, u_direction);
+    if (!li || !(li->pdf > 0.0f) || li->radiance.is_black()) return std::nullopt;
+    EmissionSample s = from_infinity(li->wi, u_position, scene);
+    s.radiance = li->radiance;
+    s.pdf_direction = li->pdf;
+    s.power = li->radiance * (1.0f / (li->pdf * s.pdf_position));
+    return s;
+}
+
 std::optional<EmissionSample> UniformEnvironment::sample_le(const Vec2& u_position, const Vec2& u_direction,
                                                             const SceneSphere& scene) const {
     EmissionSample s = from_infinity(sample_uniform_sphere(u_direction), u_position, scene);

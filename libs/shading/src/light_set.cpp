@@ -14,7 +14,9 @@ void LightSet::add(std::shared_ptr<const Emitter> emitter, const Shape* shape) {
     m_entries.push_back({std::move(emitter), 0.0f});
 }
 
-void LightSet::set_environment(std::shared_ptr<const UniformEnvironment> environment) {
+void LightSet::set_environment(std::shared_ptr<const EnvironmentEmitter> environment) {
+    if (!environment) throw Error("light set: null environment");
+    if (m_environment >= 0) throw Error("light set: a second environment (there is one environment at most)");
     m_environment = static_cast<int>(m_entries.size());
     add(environment);
     m_environment_emitter = std::move(environment);

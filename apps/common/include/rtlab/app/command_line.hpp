@@ -32,6 +32,8 @@ public:
 /// \brief The flags every rendering app shares. An unset optional keeps the scene's own choice.
 struct CommonOptions {
     std::filesystem::path output;  ///< -o; an app may set its default before add_common
+    /// Extensions -o accepts besides the image formats (".rtshare" for rtlab-render); set before add_common.
+    std::vector<std::string> other_outputs;
     /// --width, --height. An app that sets both before add_common gets both after parsing (one flag alone
     /// keeps the default's aspect ratio); rtlab-render leaves them unset (the scene's size).
     std::optional<int> width, height;
@@ -82,6 +84,8 @@ public:
     void add_flag(const std::string& flags, bool& target, const std::string& help);
     /// A positional argument (at most one value).
     void add_positional(const std::string& name, std::string& target, const std::string& help);
+    /// Positional arguments, any number (rtlab-merge's share files).
+    void add_positionals(const std::string& name, std::vector<std::filesystem::path>& target, const std::string& help);
 
     /// Adds -o, --width, --height, --aa, --spp, --aa-threshold, --aa-depth, --depth, --threads, --seed,
     /// --tonemap (one of `tone_operators` or none), --quiet and --data-dir, bound to `options`.

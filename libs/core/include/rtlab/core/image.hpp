@@ -53,7 +53,8 @@ enum class ColorEncoding { srgb, linear };
 /// Reads PNG, JPG, BMP, TGA (8-bit, decoded from sRGB unless told otherwise), Radiance HDR and PFM.
 /// Files with an alpha channel (grey + alpha, RGBA) give an image with an alpha plane, read linearly
 /// (code / 255 or / 65535) whatever the encoding. Throws rtlab::Error naming the file and the reason
-/// when it cannot be read.
+/// when it cannot be read; for an OpenEXR file the reason says that rtlab::render reads it
+/// (rtlab/render/image_input.hpp), which keeps OpenEXR out of core's dependencies.
 Image read_image(const std::filesystem::path& path, ColorEncoding encoding = ColorEncoding::srgb);
 
 /// Writes by extension: .png (8-bit, sRGB-encoded, clamped to [0, 1]; RGBA with linear alpha when the

@@ -27,7 +27,9 @@ std::shared_ptr<const ToneOperator> make_tone_operator(const ToneRegistry& regis
 /// written under a temporary name in the same folder and renamed over `path` only once complete, so a
 /// failed write leaves no file under either name and `path`, if it existed, unchanged. Throws
 /// rtlab::Error naming the path and the reason. `report`, when given, receives the tone operator's report.
+/// `variance` (the variance of each pixel's mean, same size) is written as EXR channels variance.R, .G, .B; any
+/// other format with it is an error.
 void write_render_output(const Image& hdr, const std::filesystem::path& path, const ToneOperator* tone = nullptr,
-                         ToneReport* report = nullptr);
+                         ToneReport* report = nullptr, const Image* variance = nullptr);
 
 }  // namespace rtlab

@@ -35,8 +35,8 @@
 
 namespace rtlab {
 
+struct PathVertex;
 namespace detail {
-struct SurfaceVertex;
 struct WalkStart;
 }  // namespace detail
 
@@ -85,7 +85,7 @@ public:
     float max_radius() const { return m_max_radius; }
 
 private:
-    RGB density(const PhotonMap& map, const detail::SurfaceVertex& v, std::uint32_t bounce) const;
+    RGB density(const PhotonMap& map, const PathVertex& v, std::uint32_t bounce) const;
     RGB gather_ray(const detail::WalkStart& start, const SampleStream& stream, RayStats& stats) const;
 
     const SceneQuery& m_scene;

@@ -7,7 +7,10 @@
 /// gets that stream (RadianceSource::sample_radiance, or radiance_batch for groups of coherent rays) to draw its own
 /// dimensions from kFirstIntegratorPair up (rtlab/core/sample_stream.hpp documents the numbering). Every pixel adds
 /// its samples in index order, so the sums, and the image, are the same bytes for any thread count, tile size and
-/// split into passes: 8 samples in one pass, in 8 passes of 1, or as [0, 3) then [3, 8).
+/// split into passes: 8 samples in one pass, in 8 passes of 1, or as [0, 3) then [3, 8). Pixels may be given
+/// different sample counts in a pass (adaptive sampling: rtlab/render/noise_target.hpp); the sums are added in
+/// blocks of block_samples (PixelSums), so that shares of a frame rendered apart merge into the same bytes
+/// (rtlab/render/sample_share.hpp).
 #include <rtlab/core/image.hpp>
 #include <rtlab/core/sample_stream.hpp>
 #include <rtlab/render/camera.hpp>
@@ -17,6 +20,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace rtlab {
 
@@ -29,8 +33,10 @@ struct ProgressiveSettings {
     /// samples in one pass. Changes when callbacks come, never the image.
     int pass_samples = 0;
     std::uint64_t seed = 0;  ///< SampleKey::seed of every sample
-    int tile_size = 0;       ///< as RenderSettings::tile_size (0: auto_tile_size)
-    int threads = 0;         ///< 0: as many as the machine has
+    /// The block size of the sums (PixelSums): the same for every share of a frame and for its one-process render.
+    std::uint32_t block_samples = kDefaultBlockSamples;
+    int tile_size = 0;  ///< as RenderSettings::tile_size (0: auto_tile_size)
+    int threads = 0;    ///< 0: as many as the machine has
 };
 
 /// \brief A finished tile of a pass: its pixels x0 <= x < x1, y0 <= y < y1 now hold every sample below
@@ -71,6 +77,9 @@ public:
     /// stopped pass left behind catch up first, so a stopped pass can simply be asked for again. Returns false
     /// when the stop flag ended the pass. `pass` is the index reported in the callbacks.
     bool render_to(std::uint32_t end, const ProgressiveCallbacks& callbacks = {}, int pass = 0);
+    /// The same with an end per pixel (`ends`, row-major, width x height): pixel p gets its samples up to ends[p]
+    /// (none when it holds them already). Throws rtlab::Error for another number of ends.
+    bool render_to(const std::vector<std::uint32_t>& ends, const ProgressiveCallbacks& callbacks = {}, int pass = 0);
 
     /// Counts `passes` more passes in RenderProgress::tiles_total from now on, so that progress over several
     /// render_to calls grows steadily to 1; without it each call counts its own tiles only when it starts.
@@ -82,6 +91,9 @@ public:
     const RenderStats& stats() const { return m_stats; }
 
 private:
+    struct Ends;
+    bool render_pass(const Ends& ends, const ProgressiveCallbacks& callbacks, int pass);
+
     const Camera& m_camera;
     const RadianceSource& m_radiance;
     ProgressiveSettings m_settings;

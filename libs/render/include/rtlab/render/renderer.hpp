@@ -7,6 +7,7 @@
 #include <rtlab/render/sample_buffer.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -56,6 +57,9 @@ struct RenderCallbacks {
     std::function<void(const RenderProgress&)> progress;
     /// When set and true, workers stop before their next pixel and render() returns what is done.
     const std::atomic<bool>* stop = nullptr;
+    /// Workers stop likewise once the steady clock passes this time (a render with a time budget); the clock is
+    /// read only when it is set.
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
 
 /// \brief The rendered image and what it cost.

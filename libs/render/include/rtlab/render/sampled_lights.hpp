@@ -1,7 +1,8 @@
 #pragma once
 /// \brief The lights of a render under the sampling integrators (direct, path): every object whose material
 /// emits becomes an area light, the `area` lights become emitting quads in the scene, point, spot and
-/// directional lights stay delta lights, and a background colour becomes a uniform environment.
+/// directional lights stay delta lights, and a background colour becomes a uniform environment (or the job's
+/// environment light is the environment).
 #include <rtlab/render/scene.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/light_set.hpp>
@@ -29,10 +30,12 @@ struct SampledLights {
 std::shared_ptr<const AreaEmitter> make_area_emitter(const SceneObject& object);
 
 /// Builds the lights of `scene` and `lights` for the direct and path integrators; `whitted` gives the
-/// background (black: no environment) and the convention. Throws rtlab::Error naming what such an integrator
-/// cannot honour physically: the classic convention ("convention") and ambient lights ("ambient").
+/// background (black: no environment) and the convention; `environment`, when given, is the environment light
+/// instead of the background, its power set for the scene's radius. Throws rtlab::Error naming what such an
+/// integrator cannot honour physically: the classic convention ("convention") and ambient lights ("ambient").
 SampledLights make_sampled_lights(std::shared_ptr<const Scene> scene,
                                   const std::vector<std::shared_ptr<const Light>>& lights,
-                                  const WhittedOptions& whitted);
+                                  const WhittedOptions& whitted,
+                                  std::shared_ptr<const EnvironmentEmitter> environment = nullptr);
 
 }  // namespace rtlab

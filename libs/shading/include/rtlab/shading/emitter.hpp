@@ -123,14 +123,34 @@ private:
     std::vector<float> m_cdf;  // triangles: cumulative area, last = m_area
 };
 
+/// \brief Light from infinitely far away, by direction: what rays that escape the scene see, and a light the
+/// sampling integrators sample (its samples are at_infinity; pdf_li reads only wi).
+class EnvironmentEmitter : public Emitter {
+public:
+    /// The radiance arriving at the scene along -direction (direction points from the scene to the sky; any
+    /// length > 0).
+    virtual RGB radiance(const Vec3& direction) const = 0;
+    /// The same environment lighting a scene of radius scene_radius: its power() is the radiance integrated over
+    /// the sphere of directions times pi r^2 (what a disk of the scene's size intercepts), which weighs it against
+    /// the scene's other lights.
+    virtual std::shared_ptr<const EnvironmentEmitter> for_scene_radius(float scene_radius) const = 0;
+    /// A photon from the disk of `scene` (Emitter::sample_le) whose direction is drawn by sample_li.
+    std::optional<EmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                            const SceneSphere& scene) const override;
+};
+
 /// \brief Radiance arriving equally from every direction, sampled uniformly over the sphere of directions.
-class UniformEnvironment final : public Emitter {
+class UniformEnvironment final : public EnvironmentEmitter {
 public:
     /// scene_radius bounds the scene: the power is radiance x 4 pi x pi r^2.
     UniformEnvironment(const RGB& radiance, float scene_radius) : m_radiance(radiance), m_radius(scene_radius) {}
     std::optional<EmitterSample> sample_li(const Point3& p, const Vec2& u) const override;
     float pdf_li(const Point3&, const Vec3&, const Point3&, const Normal3&) const override;
     RGB power() const override;
+    RGB radiance(const Vec3&) const override { return m_radiance; }
+    std::shared_ptr<const EnvironmentEmitter> for_scene_radius(float scene_radius) const override {
+        return std::make_shared<UniformEnvironment>(m_radiance, scene_radius);
+    }
     std::optional<EmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction,
                                             const SceneSphere& scene) const override;
     const RGB& radiance() const { return m_radiance; }

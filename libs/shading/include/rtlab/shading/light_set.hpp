@@ -11,7 +11,7 @@
 namespace rtlab {
 
 /// \brief Emitters with their selection probabilities (channel mean of power() over the total), the emitting
-/// shapes' own, and the uniform environment if there is one.
+/// shapes' own, and the environment (uniform or a map) if there is one.
 class LightSet {
 public:
     struct Entry {
@@ -23,8 +23,8 @@ public:
     /// Throws rtlab::Error for a null emitter or a non-finite power. Emitters of no power are kept (a hit finds
     /// them) but never chosen.
     void add(std::shared_ptr<const Emitter> emitter, const Shape* shape = nullptr);
-    /// The uniform environment: also added as an emitter.
-    void set_environment(std::shared_ptr<const UniformEnvironment> environment);
+    /// The environment, which rays that escape see: also added as an emitter. At most one (rtlab::Error).
+    void set_environment(std::shared_ptr<const EnvironmentEmitter> environment);
     /// Works out the probabilities; call once after the last add().
     void finish();
 
@@ -36,7 +36,7 @@ public:
         return it == m_by_shape.end() ? nullptr : &m_entries[it->second];
     }
     const Entry* environment() const { return m_environment < 0 ? nullptr : &m_entries[m_environment]; }
-    const UniformEnvironment* environment_emitter() const { return m_environment_emitter.get(); }
+    const EnvironmentEmitter* environment_emitter() const { return m_environment_emitter.get(); }
     const std::vector<Entry>& entries() const { return m_entries; }
     bool empty() const { return m_entries.empty(); }
 
@@ -44,7 +44,7 @@ private:
     std::vector<Entry> m_entries;
     std::vector<float> m_cdf;  // cumulative probability of the entries, last 1
     std::unordered_map<const Shape*, std::size_t> m_by_shape;
-    std::shared_ptr<const UniformEnvironment> m_environment_emitter;
+    std::shared_ptr<const EnvironmentEmitter> m_environment_emitter;
     int m_environment = -1;
 };
 

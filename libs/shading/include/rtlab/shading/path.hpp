@@ -32,7 +32,8 @@ struct PathOptions {
     float max_survival = 0.95f;
     int max_crossings = 64;  ///< cut-outs (opacity < 1) a shadow ray crosses at most
     /// Looked up with the direction for rays that escape, without light sampling (BSDF sampling alone finds
-    /// it, so it stays unbiased); a uniform environment is instead a light of the LightSet.
+    /// it, so it stays unbiased); an environment light (uniform or a map) is instead the LightSet's environment,
+    /// sampled and weighed by MIS.
     std::shared_ptr<const Texture> environment;
 };
 
@@ -58,13 +59,6 @@ public:
     const PathOptions& options() const { return m_options; }
 
 private:
-    struct Vertex;
-    bool find(const Ray& ray, Vertex& v) const;
-    RGB arrived(const Ray& ray, bool found, const Vertex& v, const Point3& from, float bsdf_pdf, bool specular) const;
-    RGB sample_light(const Vertex& v, float u_choice, const SampleStream& stream, std::uint32_t bounce,
-                     RayStats& stats) const;
-    RGB visibility(const SurfaceHit& from, const EmitterSample& s, RayStats& stats) const;
-
     const SceneQuery& m_scene;
     const LightSet& m_lights;
     PathOptions m_options;

@@ -33,10 +33,11 @@ public:
     RGB sample(const Vec3& direction) const;
     int face_size() const { return m_size; }
     const Image& face(CubeFace f) const { return m_faces[static_cast<int>(f)]; }
+    /// Texel (x, y) of a face as sample() reads it: x and y may be one texel beyond the face (-1 or
+    /// face_size()), which reads the neighbouring face (at a cube corner, the mean of the three).
+    RGB texel(CubeFace face, int x, int y) const;
 
 private:
-    RGB texel(CubeFace face, int x, int y) const;  // x, y may be one texel beyond the face
-
     std::array<Image, 6> m_faces;
     int m_size = 0;
 };
