@@ -4,6 +4,7 @@
 #include <rtlab/core/frame.hpp>
 #include <rtlab/core/rng.hpp>
 #include <rtlab/shading/emitter.hpp>
+#include <rtlab/shading/environment_map.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading_testing/chi_square.hpp>
 #include <rtlab/shading_testing/statistics.hpp>
@@ -221,4 +222,47 @@ TEST_CASE("A uniform environment sends photons from every direction with the pow
         env, scene, [](const Vec3&) { return 1.0 / (4.0 * kPi); }, 23, 60000 / test::kSampleScale);
     INFO("chi2 " << r.statistic << " p " << r.p_value);
     CHECK(r.p_value > kLevel);
+}
+
+TEST_CASE("An environment map sends photons by its luminance with its power on average", "[emission]") {
+    // A sky brighter above, coloured across, with a bright patch: photons come by the map's sampling, so each one's
+    // power differs with the colour the luminance-based density does not follow. Their directions are sample_li's
+    // reversed, whose distribution environment_map_test checks: here their density must be pdf_li's.
+    Image img(32, 16);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 32; ++x) img.at(x, y) = RGB(0.2f + 0.8f * (y < 8), 0.3f + 0.02f * x, 0.5f + 0.03f * y);
+    for (int y = 4; y < 6; ++y)
+        for (int x = 20; x < 23; ++x) img.at(x, y) = RGB(40.0f, 30.0f, 20.0f);
+    const SceneSphere scene{Point3(0.5f, -1.0f, 2.0f), 3.0f};
+    const std::shared_ptr<const EnvironmentEmitter> env =
+        EnvironmentMap(std::move(img), {.rotation_degrees = 30.0f}).for_scene_radius(scene.radius);
+    Rng rng(29);
+    const int n = 100000 / test::kSampleScale;
+    double sum[3] = {0.0, 0.0, 0.0}, sum2[3] = {0.0, 0.0, 0.0};
+    int missed = 0;
+    for (int i = 0; i < n; ++i) {
+        const Vec2 up = rng.uniform2();
+        const auto s = env->sample_le(up, rng.uniform2(), scene);
+        if (!s) {
+            ++missed;
+            continue;
+        }
+        const Vec3 off = s->position - scene.centre;
+        REQUIRE(glm::dot(off, s->direction) == Approx(-scene.radius).epsilon(1e-4));
+        REQUIRE(glm::length(off - glm::dot(off, s->direction) * s->direction) <= scene.radius * 1.0001f);
+        REQUIRE(s->pdf_direction ==
+                Approx(env->pdf_li(scene.centre, -s->direction, scene.centre, Normal3(0.0f))).epsilon(1e-4));
+        for (int c = 0; c < 3; ++c) {
+            sum[c] += s->power[c];
+            sum2[c] += double(s->power[c]) * s->power[c];
+        }
+    }
+    CHECK(missed <= n / 10000);
+    const RGB expected = env->power();
+    for (int c = 0; c < 3; ++c) {
+        const double mean = sum[c] / n, se = std::sqrt((sum2[c] / n - mean * mean) / n);
+        INFO("channel " << c << ": mean power " << mean << " +- " << se << ", the map's " << expected[c]);
+        CHECK(std::abs(mean - expected[c]) <= 3.0 * se);
+        CHECK(se < 0.01 * expected[c]);
+    }
 }
