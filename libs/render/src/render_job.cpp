@@ -76,8 +76,8 @@ struct PhotonOwner {
     PhotonIntegrator integrator;
 };
 
+// The caller has checked the job.
 std::shared_ptr<const PhotonIntegrator> make_photon_integrator(const RenderJob& job, const std::atomic<bool>* stop) {
-    check_job(job);
     auto owner = std::make_shared<const PhotonOwner>(job, stop);
     return {owner, &owner->integrator};
 }

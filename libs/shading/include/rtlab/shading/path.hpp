@@ -44,6 +44,8 @@ struct PathOptions {
 /// 3 (BSDF lobe choice in x). `direct` draws bounce 0's, so `path` at max_depth 1 gives the same bytes.
 /// Emission leaves a shape's front face (outward normal after the reversed flag) unless the material is
 /// emission_two_sided; a shape with textured emission is not sampled as a light (only BSDF sampling finds it).
+/// Its building blocks (vertex, emission with its MIS weight, next-event estimation) are rtlab/shading/path_vertex.hpp,
+/// which the photon mappers share.
 class PathIntegrator {
 public:
     static constexpr std::uint32_t kPairsPerBounce = 4;
