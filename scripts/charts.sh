@@ -4,17 +4,21 @@
 # of), which the charts print in their footers.
 #   scripts/charts.sh              the short benchmarks (about 4 minutes on 2 cores), then every chart
 #   scripts/charts.sh --accel      also re-measure the acceleration structures on the shared models (long)
+#   scripts/charts.sh --photon     also measure photon mapping: sppm against the path tracer on the Cornell box and
+#                                  RMSE against time on the caustics scene (long: each renders a path-traced
+#                                  reference first, about 40 min of CPU together on 2 cores)
 #   scripts/charts.sh --no-run     chart the data already in docs/data/
 # Needs the release build's benchmark programs (built here) and, for --accel, ../shared/models.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/release/bin
 data=docs/data
-run=1 accel=0
+run=1 accel=0 photon=0
 for arg in "$@"; do
   case "$arg" in
     --no-run) run=0 ;;
     --accel) accel=1 ;;
+    --photon) photon=1 ;;
     *) echo "charts: unknown option $arg"; exit 2 ;;
   esac
 done
@@ -27,7 +31,9 @@ meta() {
 if [ "$run" = 1 ]; then
   cmake --preset release >/dev/null
   cmake --build build/release -j"${JOBS:-2}" --target rtlab_geometry_bench rtlab_shading_optics_tradeoff \
-    rtlab_shading_microfacet_energy rtlab_render_aa_tradeoff rtlab_stability_tests $([ "$accel" = 1 ] && echo rtlab_app_accel)
+    rtlab_shading_microfacet_energy rtlab_render_aa_tradeoff rtlab_stability_tests \
+    $([ "$accel" = 1 ] && echo rtlab_app_accel) \
+    $([ "$photon" = 1 ] && echo rtlab_render_sppm_convergence rtlab_render_caustics_rmse)
   mkdir -p "$data"
   scripts/stability.sh >/dev/null  # docs/data/stability.jsonl: leak rates, fallbacks, offsets against scale
   meta stability "scripts/stability.sh (rtlab_stability_tests)" "counts, not timings: no medians"
@@ -55,6 +61,14 @@ if [ "$run" = 1 ]; then
     rm -f $data/antialiasing_povray.csv $data/antialiasing_povray.meta.json
     echo "charts: povray is not installed: the anti-aliasing charts have no POV-Ray series"
   fi
+  if [ "$photon" = 1 ]; then
+    cmd="rtlab_render_sppm_convergence --ref-spp 16384 --iterations 1024 --photons 20000 --threads 2"
+    $bin/$cmd --csv $data/sppm_convergence.csv
+    meta sppm_convergence "$cmd" "one run: wall seconds of the sppm iterations on 2 threads; the reference is path at 16384 spp, seed 1000"
+    cmd="rtlab_render_caustics_rmse --width 96 --height 72 --ref-spp 16384 --max-spp 1024 --iterations 512 --photons 50000 --threads 2"
+    $bin/$cmd --csv $data/caustics_rmse.csv
+    meta caustics_rmse "$cmd" "one run per point: CPU seconds (user + system, 2 threads); one reference, path at 16384 spp (its own RMSE in the chart)"
+  fi
   if [ "$accel" = 1 ]; then
     models=${RTLAB_SHARED_DIR:-../shared}/models
     [ -d "$models" ] || { echo "charts: no models folder at $models (set RTLAB_SHARED_DIR)"; exit 1; }
@@ -70,6 +84,7 @@ if [ "$run" = 1 ]; then
 fi
 /usr/bin/python3 scripts/charts/accel_charts.py docs/charts $data/accel_*.csv
 /usr/bin/python3 scripts/charts/tradeoff_charts.py $data docs/charts
+/usr/bin/python3 scripts/charts/photon_charts.py $data docs/charts
 /usr/bin/python3 scripts/charts/shading_charts.py $data docs/charts
 # The Cycles race measures with scripts/peer-cycles.sh (Blender needed); its chart is redrawn from its data here.
 if [ -f $data/peer_cycles.csv ]; then

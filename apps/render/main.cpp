@@ -50,6 +50,10 @@ void check_progressive(const rtlab::app::RenderOptions& options, const rtlab::Lo
         throw UsageError(flag + " needs the progressive pattern: add --aa sobol (" +
                          (options.common.aa ? "--aa " : "the scene's anti-aliasing is ") +
                          std::string(rtlab::pixel_pattern_name(s.pattern)) + ")");
+    if (options.sample_range && scene.job.integrator == rtlab::IntegratorKind::sppm)
+        throw UsageError(flag +
+                         ": an sppm iteration builds on the ones before it, so its samples cannot be shared "
+                         "out; use path, direct, whitted or photon");
     if (!options.sample_range && !rtlab::supports_noise_target(scene.job.integrator))
         throw UsageError(flag + ": the " + std::string(rtlab::integrator_name(scene.job.integrator)) +
                          " integrator is biased in a way the half-image estimate cannot see; use path or direct");
@@ -67,7 +71,7 @@ int render_share(const rtlab::app::RenderOptions& options, const rtlab::LoadedSc
     rtlab::ProgressiveCallbacks callbacks;
     callbacks.progress = base.progress;
     callbacks.stop = base.stop;
-    const auto radiance = rtlab::make_radiance_source(scene.job, scene.job.integrator);
+    const auto radiance = rtlab::make_radiance_source(scene.job, scene.job.integrator, base.stop);
     const rtlab::ShareRenderResult r = rtlab::render_share(*scene.job.camera, *radiance, p, hash, output, callbacks);
     const bool stopped = r.end < range.end;
     if (!options.common.quiet || stopped) {
@@ -103,7 +107,7 @@ rtlab::RenderResult render_target(const rtlab::app::RenderOptions& options, cons
     rtlab::ProgressiveCallbacks callbacks;
     callbacks.progress = base.progress;
     callbacks.stop = base.stop;
-    const auto radiance = rtlab::make_radiance_source(scene.job, scene.job.integrator);
+    const auto radiance = rtlab::make_radiance_source(scene.job, scene.job.integrator, base.stop);
     target = rtlab::render_to_target(*scene.job.camera, *radiance, p, t, callbacks);
     rtlab::RenderResult result;
     result.image = std::move(target.image);

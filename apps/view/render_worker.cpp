@@ -23,8 +23,10 @@ void lower_this_thread() {
     setpriority(PRIO_PROCESS, tid, 10);
 }
 
-/// The integrators the viewer offers, by name (rtlab::integrator_name's words).
-constexpr IntegratorKind kIntegrators[] = {IntegratorKind::whitted, IntegratorKind::direct, IntegratorKind::path};
+/// The integrators the viewer offers, by name (rtlab::integrator_name's words). All but sppm render through
+/// make_radiance_source; sppm, no radiance source, through make_sppm_renderer, an iteration per pass.
+constexpr IntegratorKind kIntegrators[] = {IntegratorKind::whitted, IntegratorKind::direct, IntegratorKind::path,
+                                           IntegratorKind::photon, IntegratorKind::sppm};
 
 }  // namespace
 
@@ -188,77 +190,126 @@ void RenderWorker::render_passes(const std::shared_ptr<const LoadedScene>& scene
     settings.seed = choice.seed.value_or(scene->job.settings.seed);
     settings.threads = choice.threads;
     const int width = camera->width(), height = camera->height();
+    auto start_display = [&](const std::string& name) {
+        std::lock_guard lock(m_mutex);
+        if (m_display.width != width || m_display.height != height) {
+            const auto n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+            m_display = DisplayBuffer{width, height, std::vector<float>(3 * n), std::vector<float>(3 * n),
+                                      std::vector<std::uint32_t>(n)};
+        }
+        m_status.rendering = true;
+        m_status.integrator = name;
+        m_status.passes_done = 0;
+        m_status.spp = choice.spp;
+        m_status.seconds = 0.0;
+        m_status.progress = 0.0;
+    };
+    // Under the lock: rows y0 to y1 changed.
+    auto mark_dirty = [&](int y0, int y1) {
+        if (m_dirty_begin >= m_dirty_end) {
+            m_dirty_begin = y0;
+            m_dirty_end = y1;
+        } else {
+            m_dirty_begin = std::min(m_dirty_begin, y0);
+            m_dirty_end = std::max(m_dirty_end, y1);
+        }
+    };
+    bool first_tile = true;
+    // Under the lock: the latency from the request to the first finished tile.
+    auto note_first_tile = [&] {
+        if (first_tile && m_request == request)
+            m_status.restart_ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - m_request_time).count();
+        first_tile = false;
+    };
+    ProgressiveCallbacks callbacks;
+    callbacks.stop = &m_stop;
+    callbacks.progress = [&](const RenderProgress& p) {
+        std::lock_guard lock(m_mutex);
+        m_status.progress = p.tiles_total > 0 ? static_cast<double>(p.tiles_done) / p.tiles_total : 0.0;
+        m_status.seconds = p.seconds;
+        m_status.rays_per_second = p.seconds > 0.0 ? static_cast<double>(p.rays.total()) / p.seconds : 0.0;
+    };
+    // Under the lock: the pass is shown; false when a newer request has come.
+    auto pass_done = [&](int passes, const RenderStats& stats) {
+        if (m_request != request) return false;
+        m_status.passes_done = passes;
+        m_status.seconds = stats.seconds;
+        m_status.rays_per_second = stats.rays_per_second();
+        push({WorkerEvent::Kind::pass, passes, request, {}});
+        return true;
+    };
     try {
         // No choice yet: the integrator the scene file names, as rtlab-render would use.
         const std::string integrator =
             choice.integrator.empty() ? std::string(integrator_name(scene->job.integrator)) : choice.integrator;
         const auto kind = parse_integrator(integrator);
         if (!kind) throw Error("viewer: unknown integrator '" + integrator + "'");
-        const auto source = make_radiance_source(scene->job, *kind);
-        ProgressiveRenderer renderer(*camera, *source, settings);
-        renderer.plan_passes(choice.spp);
-        {
-            std::lock_guard lock(m_mutex);
-            if (m_display.width != width || m_display.height != height) {
-                const auto n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-                m_display = DisplayBuffer{width, height, std::vector<float>(3 * n), std::vector<float>(3 * n),
-                                          std::vector<std::uint32_t>(n)};
-            }
-            m_status.rendering = true;
-            m_status.integrator = integrator;
-            m_status.passes_done = 0;
-            m_status.spp = choice.spp;
-            m_status.seconds = 0.0;
-            m_status.progress = 0.0;
-        }
-        ProgressiveCallbacks callbacks;
-        callbacks.stop = &m_stop;
-        // Each finished tile is copied out at once: the window shows tiles as they finish.
-        bool first_tile = true;
-        callbacks.tile = [&](const TileUpdate& t) {
-            // The worker that rendered the tile (one of TBB's) gets a lower priority too: nice is per thread and
-            // stays, so from its second tile on it renders below the window. (A tbb::task_scheduler_observer would
-            // catch the first tile as well, but removing one leaks its record in oneTBB 2021.8.)
-            lower_this_thread();
-            std::lock_guard lock(m_mutex);
-            if (first_tile && m_request == request)
-                m_status.restart_ms =
-                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - m_request_time)
-                        .count();
-            first_tile = false;
-            for (int y = t.y0; y < t.y1; ++y)
-                for (int x = t.x0; x < t.x1; ++x) {
-                    const std::size_t i =
-                        static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
-                    const RGB m = t.buffer.mean(x, y), v = t.buffer.mean_variance(x, y);
-                    for (int c = 0; c < 3; ++c) {
-                        m_display.mean[3 * i + static_cast<std::size_t>(c)] = m[c];
-                        m_display.variance[3 * i + static_cast<std::size_t>(c)] = v[c];
+        // The choice's seed and threads for what the job itself does before the passes (photon's maps).
+        RenderJob job = scene->job;
+        job.settings.seed = settings.seed;
+        job.settings.threads = settings.threads;
+        if (*kind == IntegratorKind::sppm) {
+            // An iteration is a pass: its camera pass's tiles hold only the direct light, so the window is given the
+            // whole image once the iteration's photons are in (no variance: sppm's pixels are no means of samples).
+            const auto sppm = make_sppm_renderer(job, *camera, settings);
+            sppm->plan_iterations(choice.spp);
+            start_display(integrator);
+            callbacks.tile = [&](const TileUpdate&) {
+                lower_this_thread();
+                std::lock_guard lock(m_mutex);
+                note_first_tile();
+            };
+            for (int pass = 0; pass < choice.spp; ++pass) {
+                if (!sppm->iterate(callbacks)) break;
+                const Image image = sppm->image();
+                std::lock_guard lock(m_mutex);
+                for (int y = 0; y < height; ++y)
+                    for (int x = 0; x < width; ++x) {
+                        const std::size_t i =
+                            static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+                        const RGB& m = image.at(x, y);
+                        for (int c = 0; c < 3; ++c) {
+                            m_display.mean[3 * i + static_cast<std::size_t>(c)] = m[c];
+                            m_display.variance[3 * i + static_cast<std::size_t>(c)] = 0.0f;
+                        }
+                        m_display.counts[i] = static_cast<std::uint32_t>(sppm->iterations());
                     }
-                    m_display.counts[i] = t.buffer.count(x, y);
-                }
-            if (m_dirty_begin >= m_dirty_end) {
-                m_dirty_begin = t.y0;
-                m_dirty_end = t.y1;
-            } else {
-                m_dirty_begin = std::min(m_dirty_begin, t.y0);
-                m_dirty_end = std::max(m_dirty_end, t.y1);
+                mark_dirty(0, height);
+                if (!pass_done(pass + 1, sppm->stats())) break;
             }
-        };
-        callbacks.progress = [&](const RenderProgress& p) {
-            std::lock_guard lock(m_mutex);
-            m_status.progress = p.tiles_total > 0 ? static_cast<double>(p.tiles_done) / p.tiles_total : 0.0;
-            m_status.seconds = p.seconds;
-            m_status.rays_per_second = p.seconds > 0.0 ? static_cast<double>(p.rays.total()) / p.seconds : 0.0;
-        };
-        for (int pass = 0; pass < choice.spp; ++pass) {
-            if (!renderer.render_to(static_cast<std::uint32_t>(pass + 1), callbacks, pass)) break;
-            std::lock_guard lock(m_mutex);
-            if (m_request != request) break;
-            m_status.passes_done = pass + 1;
-            m_status.seconds = renderer.stats().seconds;
-            m_status.rays_per_second = renderer.stats().rays_per_second();
-            push({WorkerEvent::Kind::pass, pass + 1, request, {}});
+        } else {
+            // photon shoots its maps here; a restart meanwhile sets m_stop, which ends the passes at once too.
+            const auto source = make_radiance_source(job, *kind, &m_stop);
+            ProgressiveRenderer renderer(*camera, *source, settings);
+            renderer.plan_passes(choice.spp);
+            start_display(integrator);
+            // Each finished tile is copied out at once: the window shows tiles as they finish.
+            callbacks.tile = [&](const TileUpdate& t) {
+                // The worker that rendered the tile (one of TBB's) gets a lower priority too: nice is per thread and
+                // stays, so from its second tile on it renders below the window. (A tbb::task_scheduler_observer
+                // would catch the first tile as well, but removing one leaks its record in oneTBB 2021.8.)
+                lower_this_thread();
+                std::lock_guard lock(m_mutex);
+                note_first_tile();
+                for (int y = t.y0; y < t.y1; ++y)
+                    for (int x = t.x0; x < t.x1; ++x) {
+                        const std::size_t i =
+                            static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+                        const RGB m = t.buffer.mean(x, y), v = t.buffer.mean_variance(x, y);
+                        for (int c = 0; c < 3; ++c) {
+                            m_display.mean[3 * i + static_cast<std::size_t>(c)] = m[c];
+                            m_display.variance[3 * i + static_cast<std::size_t>(c)] = v[c];
+                        }
+                        m_display.counts[i] = t.buffer.count(x, y);
+                    }
+                mark_dirty(t.y0, t.y1);
+            };
+            for (int pass = 0; pass < choice.spp; ++pass) {
+                if (!renderer.render_to(static_cast<std::uint32_t>(pass + 1), callbacks, pass)) break;
+                std::lock_guard lock(m_mutex);
+                if (!pass_done(pass + 1, renderer.stats())) break;
+            }
         }
     } catch (const std::exception& e) {
         std::lock_guard lock(m_mutex);

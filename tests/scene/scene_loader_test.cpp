@@ -104,6 +104,36 @@ TEST_CASE("scene errors carry file line column and pointer and come all together
     CHECK(line_count(e) >= 7);
 }
 
+TEST_CASE("the photon mapping settings are read and checked", "[scene_loader]") {
+    const std::string head = R"({"version": 1, "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "materials": [{"name": "m", "type": "lambert"}], "shapes": [{"type": "sphere", "material": "m"}],
+      "render": {"integrator": "sppm", "aa": "sobol", )";
+    const LoadedScene s = parse_scene(
+        head + R"("photons": {"count": 5000, "nearest": 30, "max_radius": 0.2, "gather": 3, "filter": "cone",
+                              "radius": 0.05, "alpha": 0.5}}})",
+        "t.json");
+    CHECK(s.job.integrator == IntegratorKind::sppm);
+    CHECK(s.job.photons.photons == 5000u);
+    CHECK(s.job.photons.nearest == 30);
+    CHECK(s.job.photons.max_radius == Approx(0.2f));
+    CHECK(s.job.photons.gather == 3);
+    CHECK(s.job.photons.filter == PhotonFilter::cone);
+    CHECK(s.job.photons.radius == Approx(0.05f));
+    CHECK(s.job.photons.alpha == Approx(0.5f));
+    const std::string e =
+        load_error(head + R"("photons": {"count": 0, "filter": "gauss", "alpha": 1, "nearest": 10, "radious": 1}}})");
+    INFO(e);
+    CHECK_THAT(e, Catch::Contains("/render/photons/count: "));
+    CHECK_THAT(e, Catch::Contains("/render/photons/filter: unknown filter 'gauss'"));
+    CHECK_THAT(e, Catch::Contains("/render/photons/alpha: must be in (0, 1)"));
+    CHECK_THAT(e, Catch::Contains("/render/photons/radious: unknown key 'radious'"));
+    SceneLoadOptions o;
+    o.overrides.integrator.emplace("photon");
+    CHECK(parse_scene(head + "\"spp\": 2}}", "t.json", o).job.integrator == IntegratorKind::photon);
+    o.overrides.integrator.emplace("photons");
+    CHECK_THAT(load_error(head + "\"spp\": 2}}", o), Catch::Contains("did you mean 'photon'"));
+}
+
 TEST_CASE("syntax errors give the line and column of the error", "[scene_loader]") {
     CHECK_THAT(load_error("{\n  \"version\": 1,\n  \"camera\": {]\n}"), Catch::StartsWith("t.json:3:"));
     CHECK_THAT(load_error("   \n"), Catch::Contains("the file is empty"));

@@ -134,3 +134,49 @@ TEST_CASE("the worker watches the scene file and the files it names", "[view]") 
     CHECK(std::filesystem::equivalent(files[1], dir / "wall.png"));
     std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("photon and sppm in the viewer give rtlab-render's images", "[view]") {
+    // sppm runs one iteration per pass and shows the whole image after each; photon is a radiance source like path.
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rtlab_view_photon_test";
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path file = dir / "glass.json";
+    std::ofstream(file) << R"({"version": 1,
+      "camera": {"position": [0, 1.5, 4], "look_at": [0, 0.4, 0]},
+      "render": {"width": 16, "height": 16, "aa": "sobol", "seed": 5, "integrator": "path", "max_depth": 5,
+                 "photons": {"count": 3000, "nearest": 20}},
+      "materials": [{"name": "floor", "type": "lambert", "albedo": 0.7}, {"name": "glass", "type": "glass"},
+                    {"name": "lamp", "type": "lambert", "albedo": 0, "emission": 20}],
+      "shapes": [{"type": "quad", "corner": [-3, 0, 3], "edge_u": [6, 0, 0], "edge_v": [0, 0, -6], "material": "floor"},
+                 {"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5, "material": "glass"},
+                 {"type": "sphere", "center": [0.5, 2, -0.5], "radius": 0.2, "material": "lamp"}]})";
+    SceneLoadOptions load;
+    load.use_environment = false;
+    for (const char* name : {"photon", "sppm"}) {
+        INFO(name);
+        RenderWorker worker(file, load);
+        RenderChoice choice;
+        choice.integrator = name;
+        choice.spp = 3;
+        const std::uint64_t request = worker.set_choice(choice);
+        REQUIRE(wait_for(worker, WorkerEvent::Kind::pass, 3, request));
+        DisplayBuffer pixels;
+        worker.take_pixels(pixels);
+        LoadedScene scene = load_scene(file, load);
+        scene.job.integrator = *parse_integrator(name);
+        scene.job.settings.spp = 3;
+        const RenderResult expected = render_job(scene.job);
+        REQUIRE(pixels.width == 16);
+        double sum = 0.0;
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x) {
+                const std::size_t i = 3 * (static_cast<std::size_t>(y) * 16 + static_cast<std::size_t>(x));
+                const RGB want = expected.image.at(x, y);
+                REQUIRE(pixels.mean[i] == want.r);
+                REQUIRE(pixels.mean[i + 1] == want.g);
+                REQUIRE(pixels.mean[i + 2] == want.b);
+                sum += want.g;
+            }
+        CHECK(sum > 1.0);
+    }
+    std::filesystem::remove_all(dir);
+}

@@ -228,9 +228,10 @@ void CommandLine::add_common(CommonOptions& o, const std::vector<std::string>& t
     add_integer("--aa-depth", o.aa_depth, 0, kMaxAdaptiveDepth, "adaptive: subdivision depth (default: the scene's)");
     add_integer("--depth", o.max_depth, 0, 64,
                 "reflection and refraction depth; direct and path: bounces, 1 = direct light (default: the scene's)");
-    add_word("--integrator", o.integrator, {"whitted", "direct", "path"},
-             "whitted (the course's recursion), direct (light and BSDF sampling, one bounce) or path (a path "
-             "tracer) (default: the scene's)");
+    add_word("--integrator", o.integrator, {"whitted", "direct", "path", "photon", "sppm"},
+             "whitted (the course's recursion), direct (light and BSDF sampling, one bounce), path (a path "
+             "tracer), photon (photon mapping) or sppm (stochastic progressive photon mapping; --spp counts its "
+             "iterations) (default: the scene's)");
     add_integer("--threads", o.threads, 0, 1024, "render threads (0: every core); the image does not depend on it");
     add_checked("--seed", "INT", "seed of every random sample (the image is the same for the same seed)",
                 [&o](const std::string& name, const std::string& raw) {

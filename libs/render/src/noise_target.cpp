@@ -62,6 +62,9 @@ bool supports_noise_target(IntegratorKind kind) {
         case IntegratorKind::direct:
         case IntegratorKind::path:
             return true;
+        case IntegratorKind::photon:
+        case IntegratorKind::sppm:
+            return false;
     }
     return false;
 }

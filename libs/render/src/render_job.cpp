@@ -1,5 +1,6 @@
 #include <rtlab/render/render_job.hpp>
 #include <rtlab/render/sampled_lights.hpp>
+#include <rtlab/render/sppm.hpp>
 
 #include <memory>
 #include <string>
@@ -65,17 +66,62 @@ void check_job(const RenderJob& job) {
         throw Error("render job: an environment light and a background or skybox; give one of them");
 }
 
+// The photon integrator with the lights and the scene it refers to: shoots the photons when made.
+struct PhotonOwner {
+    PhotonOwner(const RenderJob& job, const std::atomic<bool>* stop)
+        : sampled(make_sampled_lights(job.scene, job.lights, job.whitted, job.environment)),
+          integrator(*sampled.scene, sampled.lights, sampled.sphere, SampledIntegrator::options(job), job.photons,
+                     job.settings.seed, job.settings.threads, stop) {}
+    SampledLights sampled;
+    PhotonIntegrator integrator;
+};
+
+// The caller has checked the job.
+std::shared_ptr<const PhotonIntegrator> make_photon_integrator(const RenderJob& job, const std::atomic<bool>* stop) {
+    auto owner = std::make_shared<const PhotonOwner>(job, stop);
+    return {owner, &owner->integrator};
+}
+
+// The sppm renderer with the lights and the scene it refers to.
+struct SppmOwner {
+    SppmOwner(const RenderJob& job, const Camera& camera, const ProgressiveSettings& settings)
+        : sampled(make_sampled_lights(job.scene, job.lights, job.whitted, job.environment)),
+          renderer(camera, *sampled.scene, sampled.lights, sampled.sphere, SampledIntegrator::options(job), job.photons,
+                   settings) {}
+    SampledLights sampled;
+    SppmRenderer renderer;
+};
+
 }  // namespace
 
-std::shared_ptr<const RadianceSource> make_radiance_source(const RenderJob& job, IntegratorKind kind) {
+std::shared_ptr<const RadianceSource> make_radiance_source(const RenderJob& job, IntegratorKind kind,
+                                                           const std::atomic<bool>* stop) {
     check_job(job);
-    if (kind == IntegratorKind::whitted)
-        return std::make_shared<const Owning<WhittedIntegrator, WhittedRadiance>>(
-            std::make_unique<const WhittedIntegrator>(*job.scene, job.lights, whitted_options(job)),
-            [](const WhittedIntegrator& integrator) { return WhittedRadiance(integrator); });
-    return std::make_shared<const Owning<SampledIntegrator, PathRadiance>>(
-        std::make_unique<const SampledIntegrator>(job),
-        [kind](const SampledIntegrator& owner) { return PathRadiance(owner.integrator, kind); });
+    switch (kind) {
+        case IntegratorKind::whitted:
+            return std::make_shared<const Owning<WhittedIntegrator, WhittedRadiance>>(
+                std::make_unique<const WhittedIntegrator>(*job.scene, job.lights, whitted_options(job)),
+                [](const WhittedIntegrator& integrator) { return WhittedRadiance(integrator); });
+        case IntegratorKind::direct:
+        case IntegratorKind::path:
+            return std::make_shared<const Owning<SampledIntegrator, PathRadiance>>(
+                std::make_unique<const SampledIntegrator>(job),
+                [kind](const SampledIntegrator& owner) { return PathRadiance(owner.integrator, kind); });
+        case IntegratorKind::photon:
+            return make_photon_integrator(job, stop);
+        case IntegratorKind::sppm:
+            break;
+    }
+    throw Error(
+        "render job: sppm is not a radiance source (its iterations change every pixel's estimate): render "
+        "it with render_job or make_sppm_renderer");
+}
+
+std::shared_ptr<SppmRenderer> make_sppm_renderer(const RenderJob& job, const Camera& camera,
+                                                 const ProgressiveSettings& settings) {
+    check_job(job);
+    auto owner = std::make_shared<SppmOwner>(job, camera, settings);
+    return {owner, &owner->renderer};
 }
 
 WhittedOptions whitted_options(const RenderJob& job) {
@@ -85,6 +131,26 @@ WhittedOptions whitted_options(const RenderJob& job) {
 }
 
 RenderResult render_job(const RenderJob& job, const RenderCallbacks& callbacks) {
+    check_job(job);
+    if (job.integrator == IntegratorKind::sppm) {
+        const SampledLights sampled = make_sampled_lights(job.scene, job.lights, job.whitted, job.environment);
+        return render_sppm(*job.camera, *sampled.scene, sampled.lights, sampled.sphere, SampledIntegrator::options(job),
+                           job.photons, job.settings, callbacks);
+    }
+    if (job.integrator == IntegratorKind::photon) {
+        const auto integrator = make_photon_integrator(job, callbacks.stop);
+        RenderResult result;
+        if (integrator->cancelled()) {
+            // Stopped while shooting photons: no pixel was rendered.
+            result.image = Image(job.camera->width(), job.camera->height());
+            result.samples.assign(result.image.pixel_count(), 0);
+            result.stats.cancelled = true;
+        } else {
+            result = render(*job.camera, *integrator, job.settings, callbacks);
+        }
+        result.stats.rays += RayCounters{integrator->photon_rays(), 0};
+        return result;
+    }
     const auto source = make_radiance_source(job, job.integrator);
     return render(*job.camera, *source, job.settings, callbacks);
 }

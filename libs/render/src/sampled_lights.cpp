@@ -144,6 +144,7 @@ SampledLights make_sampled_lights(std::shared_ptr<const Scene> scene,
     else if (!whitted.environment && !whitted.background.is_black())
         out.lights.set_environment(std::make_shared<UniformEnvironment>(whitted.background, radius));
     out.lights.finish();
+    out.sphere = SceneSphere{scene->bounds().is_empty() ? Point3(0.0f) : scene->bounds().center(), radius};
     out.scene = std::move(scene);
     return out;
 }

@@ -43,16 +43,7 @@ void check_tile_settings(const char* who, const Camera& camera, int tile_size, i
     if (threads < 0) throw Error(prefix + ": thread count must be >= 0, got " + std::to_string(threads));
 }
 
-void for_each_tile(int threads, int tiles, const std::function<void(int)>& render_tile) {
-    auto run = [&] {
-        // One tile per task: tiles are costly and uneven, and the image does not depend on the split.
-        tbb::parallel_for(
-            tbb::blocked_range<int>(0, tiles, 1),
-            [&](const tbb::blocked_range<int>& r) {
-                for (int i = r.begin(); i != r.end(); ++i) render_tile(i);
-            },
-            tbb::simple_partitioner());
-    };
+void run_on_threads(int threads, const std::function<void()>& run) {
     if (threads > 0) {
         // More threads than cores (a determinism test asks for 8 on 2 cores) need TBB's global limit
         // raised as well as an arena that large; the limit is restored when the render returns.
@@ -63,6 +54,19 @@ void for_each_tile(int threads, int tiles, const std::function<void(int)>& rende
     } else {
         run();
     }
+}
+
+void for_each_tile(int threads, int tiles, const std::function<void(int)>& render_tile) {
+    auto run = [&] {
+        // One tile per task: tiles are costly and uneven, and the image does not depend on the split.
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, tiles, 1),
+            [&](const tbb::blocked_range<int>& r) {
+                for (int i = r.begin(); i != r.end(); ++i) render_tile(i);
+            },
+            tbb::simple_partitioner());
+    };
+    run_on_threads(threads, run);
 }
 
 }  // namespace rtlab::detail

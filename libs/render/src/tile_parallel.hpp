@@ -34,6 +34,10 @@ inline bool stopped(const RenderCallbacks& cb) {
 /// Throws rtlab::Error, prefixed by `who`, for a non-positive image size, a negative tile size or thread count.
 void check_tile_settings(const char* who, const Camera& camera, int tile_size, int threads);
 
+/// Runs `run` in the process's arena of `threads` threads (0: TBB's default), so that the parallel algorithms it
+/// calls use that many.
+void run_on_threads(int threads, const std::function<void()>& run);
+
 /// Calls render_tile(i) for every i in [0, tiles), one tile per task, on `threads` threads (0: TBB's default).
 void for_each_tile(int threads, int tiles, const std::function<void(int)>& render_tile);
 

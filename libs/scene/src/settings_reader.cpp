@@ -131,6 +131,49 @@ void read_sampling(LoadContext& ctx, const Json& r, const std::string& p) {
         settings.threads = *o.threads;
 }
 
+const std::vector<std::string> kIntegrators{"whitted", "direct", "path", "photon", "sppm"};
+
+// render.photons: the photon mappers' settings (PhotonOptions).
+void read_photons(LoadContext& ctx, const Json& r, const std::string& p) {
+    if (!r.contains("photons")) return;
+    const Json& j = r["photons"];
+    const std::string jp = pointer_append(p, "photons");
+    if (!expect_object(ctx.diag, j, jp, "the photon mapping settings")) return;
+    check_keys(ctx.diag, j, jp, {"count", "nearest", "max_radius", "gather", "filter", "radius", "alpha"});
+    PhotonOptions& o = ctx.out.job.photons;
+    auto at = [&](const char* key) { return pointer_append(jp, key); };
+    if (j.contains("count"))
+        if (auto v = read_integer(ctx.diag, j["count"], at("count"), 1, 1 << 30))
+            o.photons = static_cast<std::uint32_t>(*v);
+    if (j.contains("nearest"))
+        if (auto v = read_integer(ctx.diag, j["nearest"], at("nearest"), 1, 100000)) o.nearest = static_cast<int>(*v);
+    if (j.contains("max_radius"))
+        if (auto v = read_number(ctx.diag, j["max_radius"], at("max_radius"), 0.0, 1e30))
+            o.max_radius = static_cast<float>(*v);
+    if (j.contains("gather"))
+        if (auto v = read_integer(ctx.diag, j["gather"], at("gather"), 0, 4096)) o.gather = static_cast<int>(*v);
+    if (j.contains("filter")) {
+        if (auto name = read_string(ctx.diag, j["filter"], at("filter"))) {
+            if (auto f = parse_photon_filter(*name))
+                o.filter = *f;
+            else
+                ctx.error(at("filter"), "unknown filter '" + *name + "'" +
+                                            did_you_mean(*name, {"box", "cone", "epanechnikov"}) +
+                                            "; expected box, cone or epanechnikov");
+        }
+    }
+    if (j.contains("radius"))
+        if (auto v = read_number(ctx.diag, j["radius"], at("radius"), 0.0, 1e30)) o.radius = static_cast<float>(*v);
+    if (j.contains("alpha")) {
+        if (auto v = read_number(ctx.diag, j["alpha"], at("alpha"), 0.0, 1.0)) {
+            if (*v > 0.0 && *v < 1.0)
+                o.alpha = static_cast<float>(*v);
+            else
+                ctx.error(at("alpha"), "must be in (0, 1), not " + std::to_string(*v));
+        }
+    }
+}
+
 void read_whitted(LoadContext& ctx, const Json& r, const std::string& p) {
     WhittedOptions& whitted = ctx.out.job.whitted;
     auto at = [&](const char* key) { return pointer_append(p, key); };
@@ -147,16 +190,16 @@ void read_whitted(LoadContext& ctx, const Json& r, const std::string& p) {
         if (auto kind = parse_integrator(name))
             ctx.out.job.integrator = *kind;
         else if (where.empty())
-            ctx.diag.error_at(0, "--integrator: unknown integrator '" + name + "'" +
-                                     did_you_mean(name, {"whitted", "direct", "path"}) +
-                                     "; expected whitted, direct or path");
+            ctx.diag.error_at(0, "--integrator: unknown integrator '" + name + "'" + did_you_mean(name, kIntegrators) +
+                                     "; expected whitted, direct, path, photon or sppm");
         else
-            ctx.error(where, "unknown integrator '" + name + "'" + did_you_mean(name, {"whitted", "direct", "path"}) +
-                                 "; expected whitted, direct or path");
+            ctx.error(where, "unknown integrator '" + name + "'" + did_you_mean(name, kIntegrators) +
+                                 "; expected whitted, direct, path, photon or sppm");
     };
     if (r.contains("integrator"))
         if (auto name = read_string(ctx.diag, r["integrator"], at("integrator"))) read_kind(*name, at("integrator"));
     if (ctx.options.overrides.integrator) read_kind(*ctx.options.overrides.integrator, "");
+    read_photons(ctx, r, p);
     if (r.contains("min_weight"))
         if (auto v = read_number(ctx.diag, r["min_weight"], at("min_weight"), 0.0, 1.0))
             whitted.min_weight = static_cast<float>(*v);
@@ -318,7 +361,7 @@ void read_render(LoadContext& ctx, const Json& doc, const std::optional<CameraRe
     check_keys(
         ctx.diag, r, p,
         {"width", "height", "aa", "spp", "max_depth", "background", "skybox", "environment", "tonemap", "convention",
-         "seed", "output", "threads", "min_weight", "max_crossings", "integrator", "roulette_depth"});
+         "seed", "output", "threads", "min_weight", "max_crossings", "integrator", "roulette_depth", "photons"});
     std::int64_t width = 640, height = 480;
     const bool size_ok = read_size(ctx, r, p, width, height);
     read_sampling(ctx, r, p);

@@ -34,6 +34,7 @@ public:
     // The smoothstep's mean over cos between the cones is 1/2: full cone inside, half the band.
     RGB power(float) const override { return m_intensity * (2.0f * kPi * (1.0f - 0.5f * (m_cos_inner + m_cos_outer))); }
     bool is_delta() const override { return true; }
+    std::optional<EmissionCone> emission_cone() const override { return EmissionCone{m_axis, m_cos_outer}; }
 
 private:
     float cone_factor(float cos_theta) const {

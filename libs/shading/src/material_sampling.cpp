@@ -109,6 +109,11 @@ float Material::pdf(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, Trans
     return chance * own_pdf(t, wo, wi, mode);
 }
 
+float Material::non_delta_chance(const SurfaceTerms& t, const Vec3& wo) const {
+    if (!has_lobes()) return 0.0f;
+    return mixture(*this, t, wo, true).chance[Mixture::own];
+}
+
 std::optional<BsdfSample> Material::sample(const SurfaceTerms& t, const Vec3& wo, float uc, const Vec2& u,
                                            TransportMode mode) const {
     const bool lobes = has_lobes();

@@ -42,7 +42,7 @@ struct CommonOptions {
     std::optional<float> aa_threshold;      ///< adaptive: colour difference that splits a square
     std::optional<int> aa_depth;            ///< adaptive: subdivision depth
     std::optional<int> max_depth;           ///< reflection and refraction depth
-    std::optional<std::string> integrator;  ///< whitted | direct | path
+    std::optional<std::string> integrator;  ///< whitted | direct | path | photon | sppm
     std::optional<int> threads;             ///< 0: every core
     std::optional<std::uint64_t> seed;
     std::optional<std::string> tonemap;  ///< a tone operator name or "none"

@@ -1,13 +1,16 @@
 #pragma once
 /// \brief Everything one render needs, and the function that renders it.
 #include <rtlab/render/camera.hpp>
+#include <rtlab/render/photon_integrator.hpp>
 #include <rtlab/render/radiance_source.hpp>
 #include <rtlab/render/renderer.hpp>
 #include <rtlab/render/scene.hpp>
+#include <rtlab/render/sppm.hpp>
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/path.hpp>
 #include <rtlab/shading/whitted.hpp>
 
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -19,15 +22,18 @@ struct RenderJob {
     std::shared_ptr<const Scene> scene;
     std::vector<std::shared_ptr<const Light>> lights;
     WhittedOptions whitted;  ///< convention, depth, background or environment
-    /// Which integrator renders: whitted reads `whitted`; direct and path read `path` and, from `whitted`, the
+    /// Which integrator renders: whitted reads `whitted`; direct, path, photon and sppm read `path` (photon and sppm
+    /// also `photons`) and, from `whitted`, the
     /// background (a uniform environment light) or environment (looked up, not sampled) and the convention
     /// (physical only).
     IntegratorKind integrator = IntegratorKind::whitted;
     /// An environment light (an EnvironmentMap, say), instead of whitted's background and environment: what rays
     /// that escape see under every integrator, and a light that direct and path sample (with multiple importance
-    /// sampling). Its power is set for the scene's size when the render starts (for_scene_radius).
+    /// sampling) and that photon and sppm shoot photons from. Its power is set for the scene's size when the render
+    /// starts (for_scene_radius).
     std::shared_ptr<const EnvironmentEmitter> environment;
-    PathOptions path;
+    PathOptions path;         ///< direct, path, photon, sppm
+    PhotonOptions photons;    ///< photon, sppm
     RenderSettings settings;  ///< pattern, spp, adaptive, seed, threads
 };
 
@@ -70,15 +76,27 @@ private:
 /// (what the whitted integrator of render_job and of the viewer use).
 WhittedOptions whitted_options(const RenderJob& job);
 
-/// The radiance source of `kind` for a job, owning the integrator it calls and whatever that refers to (for direct
-/// and path, the sampled lights and the scene with the area lights' quads): what render_job renders with, for a
-/// program that renders a job its own way (progressively, in the viewer). Throws rtlab::Error as render_job does
-/// for the job's contents.
-std::shared_ptr<const RadianceSource> make_radiance_source(const RenderJob& job, IntegratorKind kind);
+/// The radiance source of `kind` for a job, owning the integrator it calls and whatever that refers to (for direct,
+/// path and photon, the sampled lights and the scene with the area lights' quads): what render_job renders with, for
+/// a program that renders a job its own way (progressively, to a noise target, in shares, in the viewer). photon
+/// shoots its photons and builds its maps here (job.settings.seed and threads); a `stop` flag seen meanwhile leaves
+/// the maps empty, so a caller that passes one must stop too once it is set. sppm is no radiance source (an
+/// iteration changes every pixel's estimate): it throws rtlab::Error, see make_sppm_renderer. Throws rtlab::Error
+/// as render_job does for the job's contents.
+std::shared_ptr<const RadianceSource> make_radiance_source(const RenderJob& job, IntegratorKind kind,
+                                                           const std::atomic<bool>* stop = nullptr);
 
-/// Renders a job: RenderResult::stats counts camera, shadow, reflected and refracted rays, and its image is
-/// the same for any settings.threads. Throws rtlab::Error for a job without camera or scene, a null light,
-/// an environment light beside whitted's background or environment, or bad settings (see render()).
+/// sppm for a job, its iterations driven by the caller (SppmRenderer::iterate per pass, as the viewer does), owning
+/// the sampled lights and scene it refers to; settings as SppmRenderer's. The camera must outlive it. Throws
+/// rtlab::Error as SppmRenderer and render_job do.
+std::shared_ptr<SppmRenderer> make_sppm_renderer(const RenderJob& job, const Camera& camera,
+                                                 const ProgressiveSettings& settings);
+
+/// Renders a job: RenderResult::stats counts camera, shadow, reflected and refracted rays (photon rays among the
+/// reflected and refracted), and its image is the same for any settings.threads. photon shoots its photons first
+/// (settings.seed and threads; the stop flag ends that too), then renders with any pattern; sppm runs settings.spp
+/// iterations (render_sppm: pattern sobol or random). Throws rtlab::Error for a job without camera or scene, a null
+/// light, an environment light beside whitted's background or environment, or bad settings (see render()).
 RenderResult render_job(const RenderJob& job, const RenderCallbacks& callbacks = {});
 
 }  // namespace rtlab

@@ -18,6 +18,9 @@ namespace rtlab {
 struct SampledLights {
     std::shared_ptr<const Scene> scene;
     LightSet lights;
+    /// Bounds the scene: the centre and half the diagonal of its box (radius 1 for an empty scene); the directional
+    /// lights' and the environment's powers use this radius, their photons leave a disk of it.
+    SceneSphere sphere;
 };
 
 /// The area light of one object: its shape (a quad, a disk, a sphere, a MeshShape, or an Instance of one of them

@@ -31,7 +31,7 @@ struct SceneOverrides {
     std::optional<std::string> tonemap;  ///< a tone operator name or "none"
     std::optional<std::uint64_t> seed;
     std::optional<int> max_depth;           ///< the integrator's recursion depth
-    std::optional<std::string> integrator;  ///< whitted | direct | path
+    std::optional<std::string> integrator;  ///< whitted | direct | path | photon | sppm
 };
 
 /// \brief How to load a scene.

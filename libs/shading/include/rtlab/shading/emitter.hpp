@@ -25,6 +25,32 @@ struct EmitterSample {
     float pdf = 0.0f;           ///< solid-angle density of wi; 1 for a delta light
 };
 
+/// \brief A sphere bounding the scene: lights at infinity (the environment, a directional light) send photons from
+/// a disk of this radius, perpendicular to their direction, so that every photon can reach the scene.
+struct SceneSphere {
+    Point3 centre{0.0f};
+    float radius = 1.0f;
+};
+
+/// \brief One photon leaving a light (Emitter::sample_le): where it starts, where it goes, with what densities.
+///
+/// A photon tracer gives the photon `power` / (the light's probability of being chosen) and divides the sum of what
+/// it deposits by the number of photons shot. The densities are for an algorithm that weighs light paths against
+/// others (bidirectional methods); a delta position or direction has density 1 and its flag set.
+struct EmissionSample {
+    Point3 position{0.0f};             ///< on the light, or on the disk of SceneSphere for a light at infinity
+    Vec3 direction{0.0f, 0.0f, 1.0f};  ///< unit, the way the photon travels
+    Normal3 normal{0.0f};              ///< the emitting surface's (front) normal; 0 for a point or a light at infinity
+    RGB radiance;                 ///< Le along `direction`; a point light's intensity; a directional light's irradiance
+    float pdf_position = 0.0f;    ///< area density of `position` (1 when delta_position)
+    float pdf_direction = 0.0f;   ///< solid-angle density of `direction` (1 when delta_direction)
+    bool delta_position = false;  ///< point and spot lights
+    bool delta_direction = false;  ///< directional light
+    /// radiance |cos(normal, direction)| / (pdf_position pdf_direction): the flux the photon stands for (cos is 1 for
+    /// a point and at infinity).
+    RGB power;
+};
+
 /// \brief A light as the sampling integrators see it. Thread-safe: all methods are const.
 class Emitter {
 public:
@@ -38,6 +64,17 @@ public:
     /// Emitted power (flux), by which lights are chosen.
     virtual RGB power() const = 0;
     virtual bool is_delta() const { return false; }
+    /// A photon leaving the light (photon mapping): u_position picks the point, u_direction the direction, both
+    /// uniform in [0, 1)^2; `scene` bounds the scene for lights at infinity. nullopt when the draw is degenerate, or
+    /// for a light that cannot emit photons (the default: an emitter that does not override this sends none, so a
+    /// photon map misses its light). Area lights: a point uniform by area, a cosine-weighted direction about the
+    /// front normal (either face, half each, when two-sided); point: uniform over the sphere; spot: uniform in its
+    /// cone (Light::emission_cone); directional and environment: a point uniform on the disk of scene.radius
+    /// perpendicular to the direction, centred on the scene's centre pushed scene.radius back towards the light. An
+    /// environment map does the same with its direction drawn as sample_li draws it: power = Le / (pdf_direction
+    /// pdf_position), pdf_position = 1 / (pi scene.radius^2).
+    virtual std::optional<EmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                                    const SceneSphere& scene) const;
 };
 
 /// \brief The surface an AreaEmitter samples, in world space.
@@ -64,6 +101,8 @@ public:
     float pdf_li(const Point3& p, const Vec3& wi, const Point3& on_light, const Normal3& normal) const override;
     /// radiance x area x pi, twice that when two-sided.
     RGB power() const override;
+    std::optional<EmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                            const SceneSphere& scene) const override;
 
     float area() const { return m_area; }
     const RGB& radiance() const { return m_radiance; }
@@ -95,6 +134,9 @@ public:
     /// the sphere of directions times pi r^2 (what a disk of the scene's size intercepts), which weighs it against
     /// the scene's other lights.
     virtual std::shared_ptr<const EnvironmentEmitter> for_scene_radius(float scene_radius) const = 0;
+    /// A photon from the disk of `scene` (Emitter::sample_le) whose direction is drawn by sample_li.
+    std::optional<EmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                            const SceneSphere& scene) const override;
 };
 
 /// \brief Radiance arriving equally from every direction, sampled uniformly over the sphere of directions.
@@ -109,6 +151,8 @@ public:
     std::shared_ptr<const EnvironmentEmitter> for_scene_radius(float scene_radius) const override {
         return std::make_shared<UniformEnvironment>(m_radiance, scene_radius);
     }
+    std::optional<EmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                            const SceneSphere& scene) const override;
     const RGB& radiance() const { return m_radiance; }
 
 private:
@@ -125,6 +169,8 @@ public:
     float pdf_li(const Point3&, const Vec3&, const Point3&, const Normal3&) const override { return 0.0f; }
     RGB power() const override { return m_power; }
     bool is_delta() const override { return true; }
+    std::optional<EmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                            const SceneSphere& scene) const override;
 
 private:
     std::shared_ptr<const Light> m_light;
@@ -133,5 +179,8 @@ private:
 
 /// Uniform direction on the unit sphere from u in [0, 1)^2 (density 1 / (4 pi)).
 Vec3 sample_uniform_sphere(const Vec2& u);
+/// Uniform direction in the cone of half-angle acos(cos_max) about +z from u in [0, 1)^2 (density
+/// 1 / (2 pi (1 - cos_max))).
+Vec3 sample_uniform_cone(const Vec2& u, float cos_max);
 
 }  // namespace rtlab

@@ -27,6 +27,12 @@ struct EmittingQuad {
     bool two_sided = false;
 };
 
+/// \brief The cone a point-like delta light shines into: unit axis, cosine of the half-angle.
+struct EmissionCone {
+    Vec3 axis{0.0f, 0.0f, 1.0f};
+    float cos_max = -1.0f;
+};
+
 /// \brief A light. sample() is const and thread-safe; its random numbers come from the caller.
 class Light {
 public:
@@ -50,6 +56,9 @@ public:
     virtual bool is_delta() const { return false; }
     /// The rectangle of an area light (nullopt for the others).
     virtual std::optional<EmittingQuad> emitting_quad() const { return std::nullopt; }
+    /// A point-like delta light that shines into a cone only (a spot): photons are emitted in it. nullopt: every
+    /// direction (the photon tracer reads the intensity of each through sample()).
+    virtual std::optional<EmissionCone> emission_cone() const { return std::nullopt; }
 };
 
 using LightRegistry = Registry<Light>;

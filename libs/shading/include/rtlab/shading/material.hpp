@@ -99,6 +99,10 @@ public:
     /// (a lobe that reaches below the horizon): the path ends there.
     std::optional<BsdfSample> sample(const SurfaceTerms& terms, const Vec3& wo, float uc, const Vec2& u,
                                      TransportMode mode) const;
+    /// The probability that sample() draws from the model's own lobes (the part eval() and pdf() describe) rather
+    /// than from a delta lobe, for this wo; 0 without sampled lobes. An integrator that estimates the non-delta part
+    /// by other means (photon density) and follows the delta lobes by sampling weighs by it.
+    float non_delta_chance(const SurfaceTerms& terms, const Vec3& wo) const;
 
     /// The fraction of light a shadow ray keeps crossing this surface: (1 - opacity) + opacity kt.
     RGB shadow_transmittance(const TextureLookup& lookup) const {

@@ -13,9 +13,10 @@
 
 namespace rtlab {
 
-/// \brief The integrators a render can choose by name.
-enum class IntegratorKind { whitted, direct, path };
-/// "whitted", "direct" or "path"; nullopt for another word.
+/// \brief The integrators a render can choose by name: photon (photon mapping) and sppm (stochastic progressive
+/// photon mapping) are rtlab::render's (rtlab/render/photon_integrator.hpp, sppm.hpp).
+enum class IntegratorKind { whitted, direct, path, photon, sppm };
+/// "whitted", "direct", "path", "photon" or "sppm"; nullopt for another word.
 std::optional<IntegratorKind> parse_integrator(std::string_view name);
 std::string_view integrator_name(IntegratorKind kind);
 
@@ -43,6 +44,8 @@ struct PathOptions {
 /// 3 (BSDF lobe choice in x). `direct` draws bounce 0's, so `path` at max_depth 1 gives the same bytes.
 /// Emission leaves a shape's front face (outward normal after the reversed flag) unless the material is
 /// emission_two_sided; a shape with textured emission is not sampled as a light (only BSDF sampling finds it).
+/// Its building blocks (vertex, emission with its MIS weight, next-event estimation) are rtlab/shading/path_vertex.hpp,
+/// which the photon mappers share.
 class PathIntegrator {
 public:
     static constexpr std::uint32_t kPairsPerBounce = 4;
@@ -58,13 +61,6 @@ public:
     const PathOptions& options() const { return m_options; }
 
 private:
-    struct Vertex;
-    bool find(const Ray& ray, Vertex& v) const;
-    RGB arrived(const Ray& ray, bool found, const Vertex& v, const Point3& from, float bsdf_pdf, bool specular) const;
-    RGB sample_light(const Vertex& v, float u_choice, const SampleStream& stream, std::uint32_t bounce,
-                     RayStats& stats) const;
-    RGB visibility(const SurfaceHit& from, const EmitterSample& s, RayStats& stats) const;
-
     const SceneQuery& m_scene;
     const LightSet& m_lights;
     PathOptions m_options;
