@@ -3,6 +3,7 @@
 #include <rtlab/render/render_job.hpp>
 
 #include <catch2/catch.hpp>
+#include <scratch_files.hpp>
 
 #include <chrono>
 #include <fstream>
@@ -137,8 +138,7 @@ TEST_CASE("the worker watches the scene file and the files it names", "[view]") 
 
 TEST_CASE("photon and sppm in the viewer give rtlab-render's images", "[view]") {
     // sppm runs one iteration per pass and shows the whole image after each; photon is a radiance source like path.
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rtlab_view_photon_test";
-    std::filesystem::create_directories(dir);
+    const std::filesystem::path dir = rtlab::test::scratch_dir("view_photon");
     const std::filesystem::path file = dir / "glass.json";
     std::ofstream(file) << R"({"version": 1,
       "camera": {"position": [0, 1.5, 4], "look_at": [0, 0.4, 0]},

@@ -5,7 +5,7 @@
 namespace rtlab {
 
 MeshShape::MeshShape(std::shared_ptr<const TriangleMesh> mesh, std::string_view method, const BuildOptions& options)
-    : m_mesh(std::move(mesh)) {
+    : m_mesh(std::move(mesh)), m_options(options) {
     if (!m_mesh) throw Error("mesh shape: no mesh");
     m_accel = make_accelerator(method, *m_mesh, options);
     m_bounds = m_mesh->bounds();

@@ -4,6 +4,8 @@
 #include <rtlab/geometry/sphere.hpp>
 #include <rtlab/render/scene.hpp>
 
+#include "flat_meshes.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -58,13 +60,25 @@ bool same_bits(const Point3& a, const Point3& b) { return std::memcmp(&a, &b, si
 
 }  // namespace
 
-/// A plain list below the threshold, a kd-tree (SAH, the library's default cost model) from it.
+/// The small meshes of the set in one flat triangle tree (when there are two or more), and the other objects in a
+/// plain list below the threshold, a kd-tree (SAH, the library's default cost model) from it.
 class Scene::Set {
 public:
     /// closest(): no hit; a hit the tree found, whose object the caller looks up by shape.
     static constexpr std::size_t kNone = SIZE_MAX, kLookUp = SIZE_MAX - 1;
 
-    Set(std::vector<SetMember> members, std::size_t threshold) {
+    Set(std::vector<SetMember> members, const SceneOptions& options) {
+        std::vector<FlatMeshes::Part> parts;
+        for (const SetMember& m : members)
+            if (const MeshShape* mesh = FlatMeshes::joinable(*m.shape, options.flat_mesh_triangles))
+                parts.push_back({mesh, m.object});
+        if (parts.size() >= 2) {
+            m_flat.emplace(std::move(parts));
+            std::erase_if(members, [&](const SetMember& m) {
+                return FlatMeshes::joinable(*m.shape, options.flat_mesh_triangles) != nullptr;
+            });
+        }
+        const std::size_t threshold = options.tree_threshold;
         if (members.size() >= threshold && !members.empty()) {
             std::vector<const Shape*> shapes;
             shapes.reserve(members.size());
@@ -81,14 +95,38 @@ public:
     }
 
     bool is_tree() const { return m_tree.has_value(); }
+    std::size_t flat_meshes() const { return m_flat ? m_flat->part_count() : 0; }
 
     /// The closest hit's object index, kLookUp for a tree's hit or kNone. for_shading: the record may leave
     /// out the uv where the object's material does not read it.
     std::size_t closest(const Ray& ray, SurfaceHit& hit, bool for_shading) const {
-        if (m_tree) return m_tree->intersect(ray, hit) ? kLookUp : kNone;
+        if (!m_flat) return closest_other(ray, ray.tmax, hit, for_shading);
+        // The flat tree first: its hit bounds the other objects' search, and its record is filled only if none
+        // of them is nearer (a tie stays with the flat tree's triangle).
+        MeshHit found;
+        if (!m_flat->intersect(ray, found)) return closest_other(ray, ray.tmax, hit, for_shading);
+        const std::size_t other = closest_other(ray, found.t, hit, for_shading);
+        return other != kNone ? other : m_flat->complete(ray, found, hit);
+    }
+
+    bool occluded(const Ray& ray) const { return (m_flat && m_flat->occluded(ray)) || occluded_other(ray); }
+
+    std::size_t bytes() const {
+        const std::size_t flat = m_flat ? m_flat->bytes() : 0;
+        if (!m_tree) return flat + m_list.capacity() * sizeof(SetMember);
+        const KdTreeData& d = m_tree->data();
+        return flat + m_tree->source().shapes.capacity() * sizeof(const Shape*) + d.nodes.capacity() * sizeof(KdNode) +
+               d.primitive_indices.capacity() * sizeof(std::uint32_t);
+    }
+
+private:
+    // closest() over the objects outside the flat tree, for hits before tmax.
+    std::size_t closest_other(const Ray& ray, float tmax, SurfaceHit& hit, bool for_shading) const {
+        Ray r = ray;
+        r.tmax = tmax;
+        if (m_tree) return m_tree->intersect(r, hit) ? kLookUp : kNone;
         // Shapes that defer their record only report distances; the one that stays nearest is completed at the
         // end, so a hit a closer one replaces costs no record.
-        Ray r = ray;
         const SetMember* deferred = nullptr;
         const SetMember* found = nullptr;
         float alpha = 0.0f, beta = 0.0f;  // the deferred quad's plane coordinates
@@ -133,7 +171,7 @@ public:
         return found->object;
     }
 
-    bool occluded(const Ray& ray) const {
+    bool occluded_other(const Ray& ray) const {
         if (m_tree) return m_tree->occluded(ray);
         Sphere::RayTerms terms;
         for (const SetMember& m : m_list) {
@@ -148,14 +186,7 @@ public:
         return false;
     }
 
-    std::size_t bytes() const {
-        if (!m_tree) return m_list.capacity() * sizeof(SetMember);
-        const KdTreeData& d = m_tree->data();
-        return m_tree->source().shapes.capacity() * sizeof(const Shape*) + d.nodes.capacity() * sizeof(KdNode) +
-               d.primitive_indices.capacity() * sizeof(std::uint32_t);
-    }
-
-private:
+    std::optional<FlatMeshes> m_flat;
     std::vector<SetMember> m_list;
     std::optional<KdTree<ObjectSource>> m_tree;
 };
@@ -192,9 +223,9 @@ Scene::Scene(std::vector<SceneObject> objects, SceneOptions options) : m_objects
     }
 
     m_opaque_is_all = opaque.size() == all.size();
-    m_all = std::make_unique<Set>(std::move(all), options.tree_threshold);
-    if (!m_opaque_is_all) m_opaque = std::make_unique<Set>(std::move(opaque), options.tree_threshold);
-    m_transmissive = std::make_unique<Set>(std::move(transmissive), options.tree_threshold);
+    m_all = std::make_unique<Set>(std::move(all), options);
+    if (!m_opaque_is_all) m_opaque = std::make_unique<Set>(std::move(opaque), options);
+    m_transmissive = std::make_unique<Set>(std::move(transmissive), options);
 }
 
 Scene::~Scene() = default;
@@ -238,6 +269,8 @@ SurfaceInfo Scene::surface(const SurfaceHit& hit) const {
 }
 
 std::string_view Scene::structure() const { return m_all->is_tree() ? "kd-tree" : "list"; }
+
+std::size_t Scene::flat_meshes() const { return m_all->flat_meshes(); }
 
 std::size_t Scene::structure_bytes() const {
     std::size_t bytes = m_index.capacity() * sizeof(m_index[0]) + m_all->bytes() + m_transmissive->bytes();

@@ -18,12 +18,16 @@ public:
     bool intersect(const Ray& ray, SurfaceHit& hit) const override;
     bool occluded(const Ray& ray) const override { return m_accel->occluded(ray); }
     const TriangleAccelerator& accelerator() const { return *m_accel; }
+    /// The options the structure was built with: a scene that gathers small meshes into one tree of its own
+    /// (render's Scene) takes only meshes whose triangle test it keeps.
+    const BuildOptions& build_options() const { return m_options; }
     /// The triangles, for an area light that samples them by area.
     const TriangleMesh& mesh() const { return *m_mesh; }
 
 private:
     std::shared_ptr<const TriangleMesh> m_mesh;
     std::unique_ptr<TriangleAccelerator> m_accel;
+    BuildOptions m_options;
     AABB m_bounds;
 };
 

@@ -20,6 +20,12 @@ namespace rtlab {
 /// repetitions). Below it the list wins by up to 1.6x, above it the tree by up to 4.7x.
 inline constexpr std::size_t kSceneTreeThreshold = 24;
 
+/// Triangles up to which a MeshShape object joins the one flat triangle tree of its scene set (when two or more
+/// do): a mesh this small duplicates a few kilobytes at most, while a ray pays a root box test and a walk
+/// set-up per mesh tree it meets. Measured on the Cornell box (six meshes, 32 triangles; README, "A race with
+/// Blender's Cycles").
+inline constexpr std::size_t kSceneFlatMeshTriangles = 1024;
+
 /// \brief One object of a scene: a shape (analytic, a MeshShape, or an Instance of one) and its material.
 struct SceneObject {
     std::shared_ptr<const Shape> shape;
@@ -33,6 +39,9 @@ struct SceneOptions {
     /// A query structure over this many objects or more is a kd-tree, fewer a plain list. 0 or 1: always a
     /// tree; SIZE_MAX: always a list.
     std::size_t tree_threshold = kSceneTreeThreshold;
+    /// MeshShape objects (not Instances) of at most this many triangles, kd-trees with the watertight test,
+    /// share one triangle tree per set when two or more qualify; 0: every mesh keeps its own tree only.
+    std::size_t flat_mesh_triangles = kSceneFlatMeshTriangles;
 };
 
 /// \brief The objects of a render and the structures that answer the Whitted recursion's queries.
@@ -41,8 +50,10 @@ struct SceneOptions {
 /// opaque shadow casters (occluded: any-hit), the transmissive shadow casters (material->transmits_shadows();
 /// intersect_transmissive). Objects with flags.casts_shadows false are in neither shadow set. Shapes are used
 /// as they are: analytic shapes stay analytic, a MeshShape carries its own tree, and Instances of one
-/// MeshShape share it. A hit's shape is the object's own (outermost) shape, so instances of one mesh can
-/// carry different materials. Immutable after construction and safe to query from several threads.
+/// MeshShape share it; but small MeshShape objects of a set (SceneOptions::flat_mesh_triangles) are found
+/// through one triangle tree over all of them, with the same t and record their own trees give. A hit's shape is the
+/// object's own (outermost) shape, so instances of one mesh can carry different materials. Immutable after construction
+/// and safe to query from several threads.
 class Scene final : public SceneQuery {
 public:
     /// Throws rtlab::Error for an object without a shape or a material, or a shape given to two objects
@@ -63,6 +74,8 @@ public:
 
     /// What answers intersect(): "list" or "kd-tree", for the statistics.
     std::string_view structure() const;
+    /// How many objects' meshes intersect() finds through the flat triangle tree (0: none).
+    std::size_t flat_meshes() const;
     std::size_t object_count() const { return m_objects.size(); }
     const std::vector<SceneObject>& objects() const { return m_objects; }
     /// The union of every object's bounds (empty for an empty scene).
