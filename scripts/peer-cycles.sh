@@ -18,6 +18,7 @@
 #
 #   scripts/peer-cycles.sh [--quick] [--repeat N] [--threads "1 2"] [--size WxH] [--spp N] [--depth D]
 #                          [--ref-size WxH] [--ref-spp N] [--ladder "16 32 ..."] [--out DIR] [--no-build]
+#   scripts/peer-cycles.sh --envmap [--quick] [--out DIR] [--no-build]
 #
 #   --quick      a short check of the whole pipeline (small images, few samples): not the measurement
 #   --repeat     timed runs per setting and renderer in part 2, the median is reported (default 3)
@@ -25,6 +26,15 @@
 #   --ref-size --ref-spp   the converged renders of parts 3 and 4 (default 128x128, 4096 spp)
 #   --ladder     part 4's sample counts (default "8 16 32 64 128 256 512"), rendered at --ref-size
 #   --out        images and logs (default out/peer-cycles)
+#   --envmap     instead of the box: the environment-map check (issue 22) on bench/peer/cycles/envmap_sphere.json
+#                (a clay sphere on a grey disk under envmaps/city.exr), which bench/peer/cycles/envmap.py builds
+#                in Cycles. (a) orientation: the background pixels of converged renders (160x120, 4096 spp),
+#                rtlab against Cycles, and against Cycles with the map deliberately turned by 90, 180, 270
+#                degrees, mirrored left-right, front-back and upside down (those must differ); rtlab's map
+#                "rotation" 90 against Cycles' translation of it; (b) the sphere's and the disk's mean colour,
+#                rtlab over Cycles; (c) time to equal RMSE, 1 thread, ladder 16-1024 spp. Writes
+#                docs/data/peer_cycles_envmap.csv (machine, date, commit and command in every row). 15 minutes
+#                on the 2-core machine with other work running.
 # The whole run took 2 hours on this project's 2-core machine with other builds running (load 8-10).
 # Blender is a peer, not a dependency: scripts/setup.sh does not install it (apt-get install
 # --no-install-recommends blender). The bunny needs models/stanford-bunny.obj on the data path
@@ -34,11 +44,12 @@ cd "$(dirname "$0")/.."
 root=$PWD
 
 build=1 repeat=3 threads_list="1 2" size=256x256 spp=256 depth=8 ref_size=128x128 ref_spp=4096
-ladder="8 16 32 64 128 256 512" out=out/peer-cycles quick=0
+ladder="8 16 32 64 128 256 512" out=out/peer-cycles quick=0 envmap=0
 command_line="scripts/peer-cycles.sh $*"
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
+    --envmap) envmap=1 ;;
     --no-build) build=0 ;;
     --repeat) repeat=$2; shift ;;
     --threads) threads_list=$2; shift ;;
@@ -49,7 +60,7 @@ while [ $# -gt 0 ]; do
     --ref-spp) ref_spp=$2; shift ;;
     --ladder) ladder=$2; shift ;;
     --out) out=$2; shift ;;
-    -h|--help) sed -n '2,30p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,40p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "peer-cycles: unknown argument '$1' (see --help)" >&2; exit 1 ;;
   esac
   shift
@@ -93,11 +104,14 @@ fi
 mkdir -p "$out" "$(dirname "$csv")" "$(dirname "$chart")"
 out=$(cd "$out" && pwd)
 images="$python scripts/peer/cycles_images.py"
+cycles_script=bench/peer/cycles/cornell_box.py
 scene_file() {
   case "$1" in
     box) echo scenes/cornell_box.json ;;
     glossy) echo scenes/cornell_box_glossy.json ;;
     bunny) echo scenes/cornell_box_bunny.json ;;
+    envmap) echo bench/peer/cycles/envmap_sphere.json ;;
+    envmap_rot90) echo "$out/envmap_sphere_rot90.json" ;;
   esac
 }
 now() { date +%s.%N; }
@@ -119,7 +133,7 @@ run_cycles() {
   shift 7
   local log=${image%.*}.log t0 t1
   t0=$(now)
-  /usr/bin/time -o "$log.time" -f "%U %S" "$blender" -b --factory-startup -P bench/peer/cycles/cornell_box.py -- "$(scene_file "$scene")" -o "$image" \
+  /usr/bin/time -o "$log.time" -f "%U %S" "$blender" -b --factory-startup -P "$cycles_script" -- "$(scene_file "$scene")" -o "$image" \
     --size "$wh" --spp "$n" --depth "$d" --threads "$t" --seed "$seed" --data-dir "$shared" "$@" >"$log" 2>&1 ||
     { echo "peer-cycles: Cycles failed, see $log" >&2; exit 1; }
   t1=$(now)
@@ -153,6 +167,93 @@ load=$(cut -d' ' -f1 /proc/loadavg)
 max_threads=$(nproc)
 cycles_version=$("$blender" --version 2>/dev/null | head -1)
 echo "peer-cycles: $cycles_version against rtlab-render on $machine (load $load at start)"
+# One point of an efficiency ladder (part 4, --envmap), appended to $csv at $ref_size, $depth, against $ref_spp.
+ladder_row() {  # scene renderer integrator threads spp "wall render cpu [render_cpu]" image reference
+  local e w r c rc
+  read -r w r c rc <<<"$6"
+  e=$($images rmse "$7" "$8" "$5" "$ref_spp")
+  echo "$1,$2,$3,$4,${ref_size%x*},${ref_size#*x},$5,$depth,$r,$w,${rc:-},$c,$(sed -n 's/rmse=\([^ ]*\) rel_rmse=\([^ ]*\) rmse_raw=\([^ ]*\)/\1,\2,\3/p' <<<"$e")" >>"$csv"
+}
+
+# --- the environment-map check (--envmap, issue 22) ---------------------------------------------------------
+if [ "$envmap" = 1 ]; then
+  cycles_script=bench/peer/cycles/envmap.py
+  env_scene=$(scene_file envmap)
+  env=$python' scripts/peer/cycles_envmap.py'
+  ref_size=160x120 ref_spp=4096 depth=8 variant_spp=64 ladder="16 64 256 1024"
+  env_csv=docs/data/peer_cycles_envmap.csv
+  if [ "$quick" = 1 ]; then
+    ref_spp=256 variant_spp=8 ladder="4 16 64" env_csv=$out/peer_cycles_envmap.csv
+  fi
+  commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+  git diff --quiet HEAD 2>/dev/null || commit="$commit+changes"
+  echo "machine,date,commit,command,section,renderer,variant,threads,width,height,spp,quantity,value" >"$env_csv"
+  env_row() {  # section renderer variant threads spp quantity value
+    echo "\"$machine\",$date_now,$commit,\"$command_line\",$1,$2,$3,$4,${ref_size%x*},${ref_size#*x},$5,$6,$7" >>"$env_csv"
+  }
+  echo "envmap: $env_scene at $ref_size, depth $depth; converged renders at $ref_spp spp, $max_threads threads"
+  run_rtlab envmap "$ref_size" "$ref_spp" "$depth" "$max_threads" 1 "$out/env_ref_rtlab.pfm" path >/dev/null
+  run_cycles envmap "$ref_size" "$ref_spp" "$depth" "$max_threads" 1 "$out/env_ref_cycles.exr" \
+    --pfm "$out/env_ref_cycles.pfm" >/dev/null
+  # (a) and (b): the converged renders against each other.
+  a=$($env compare "$env_scene" "$out/env_ref_rtlab.pfm" "$out/env_ref_cycles.pfm")
+  echo "  (a, b) rtlab against Cycles: $a"
+  for q in bg_pixels bg_rel bg_ratio ball_pixels floor_pixels; do
+    env_row agreement rtlab_over_cycles none "$max_threads" "$ref_spp" "$q" "$(field "$q" "$a")"
+  done
+  for shape in ball floor; do
+    IFS=: read -r cr cg cb <<<"$(field "${shape}_ratio" "$a")"
+    env_row agreement rtlab_over_cycles none "$max_threads" "$ref_spp" "${shape}_ratio_r" "$cr"
+    env_row agreement rtlab_over_cycles none "$max_threads" "$ref_spp" "${shape}_ratio_g" "$cg"
+    env_row agreement rtlab_over_cycles none "$max_threads" "$ref_spp" "${shape}_ratio_b" "$cb"
+  done
+  # (a) the wrong maps: Cycles with the map turned or mirrored, against the same rtlab render.
+  echo "  (a) background of rtlab's render against Cycles' with the map (bg_rel: sum |dY| / sum Y):"
+  for v in none rot90 rot180 rot270 mirror-lr mirror-fb upside-down; do
+    run_cycles envmap "$ref_size" "$variant_spp" "$depth" "$max_threads" 2 "$out/env_variant_${v}_cycles.exr" \
+      --pfm "$out/env_variant_${v}_cycles.pfm" --variant "$v" >/dev/null
+    a=$($env compare "$env_scene" "$out/env_ref_rtlab.pfm" "$out/env_variant_${v}_cycles.pfm")
+    printf '      %-12s bg_rel %s\n' "$v" "$(field bg_rel "$a")"
+    env_row orientation rtlab_against_cycles_variant "$v" "$max_threads" "$variant_spp" bg_rel "$(field bg_rel "$a")"
+  done
+  # rtlab's rotation against Cycles' translation of it (the Mapping node's -R).
+  sed 's/"rotation": 0}/"rotation": 90}/' "$env_scene" >"$(scene_file envmap_rot90)"
+  grep -q '"rotation": 90}' "$(scene_file envmap_rot90)" || { echo "peer-cycles: no rotation 0 in $env_scene" >&2; exit 1; }
+  run_rtlab envmap_rot90 "$ref_size" "$variant_spp" "$depth" "$max_threads" 2 "$out/env_rotation90_rtlab.pfm" path >/dev/null
+  run_cycles envmap_rot90 "$ref_size" "$variant_spp" "$depth" "$max_threads" 2 "$out/env_rotation90_cycles.exr" \
+    --pfm "$out/env_rotation90_cycles.pfm" >/dev/null
+  a=$($env compare "$env_scene" "$out/env_rotation90_rtlab.pfm" "$out/env_rotation90_cycles.pfm")
+  printf '      %-12s bg_rel %s (both renderers given "rotation": 90)\n' rotation90 "$(field bg_rel "$a")"
+  env_row orientation rtlab_against_cycles rotation90 "$max_threads" "$variant_spp" bg_rel "$(field bg_rel "$a")"
+  for f in env_ref_rtlab env_ref_cycles env_variant_mirror-lr_cycles env_variant_rot90_cycles; do
+    $env png "$out/$f.pfm" "$out/$f.png" --exposure -1
+  done
+  # (c) time to equal RMSE, 1 thread, against each renderer's own converged render.
+  csv=$out/envmap_ladder.csv
+  echo "scene,renderer,integrator,threads,width,height,spp,depth,render_s,wall_s,render_cpu_s,cpu_s,rmse,rel_rmse,rmse_raw" >"$csv"
+  echo "  (c) ladder at 1 thread, spp $ladder:"
+  for n in $ladder; do
+    img=$out/env_ladder_s${n}
+    res=$(run_cycles envmap "$ref_size" "$n" "$depth" 1 0 "${img}_cycles.exr" --pfm "${img}_cycles.pfm")
+    ladder_row envmap cycles path 1 "$n" "$res" "${img}_cycles.pfm" "$out/env_ref_cycles.pfm"
+    res=$(run_rtlab envmap "$ref_size" "$n" "$depth" 1 0 "${img}_rtlab.pfm" path)
+    ladder_row envmap rtlab path 1 "$n" "$res" "${img}_rtlab.pfm" "$out/env_ref_rtlab.pfm"
+  done
+  tail -n +2 "$csv" | while IFS=, read -r _ r _ t _ _ n _ rs ws rcs cs e re _; do
+    for kv in render_s=$rs wall_s=$ws render_cpu_s=$rcs cpu_s=$cs rmse=$e rel_rmse=$re; do
+      if [ -n "${kv#*=}" ]; then env_row ladder "$r" none "$t" "$n" "${kv%%=*}" "${kv#*=}"; fi
+    done
+  done
+  sed 's/^/      /' "$csv"
+  $images efficiency "$csv" | tee "$out/envmap_efficiency.txt" | sed 's/^/      /'
+  while read -r _ thr basis geo last _; do
+    env_row efficiency "$basis" none "${thr#threads=}" "${ladder// /:}" geomean "${geo#geomean=}"
+    env_row efficiency "$basis" none "${thr#threads=}" "${ladder// /:}" lowest_rmse "${last#last=}"
+  done < <(grep geomean= "$out/envmap_efficiency.txt")
+  echo "peer-cycles: $env_csv; images and logs in $out (env_*.png)"
+  exit 0
+fi
+
 echo "section,scene,threads,width,height,spp,depth,quantity,value" >"$summary"
 row() { echo "$1,$2,$3,${4%x*},${4#*x},$5,$6,$7,$8" >>"$summary"; }
 
@@ -226,12 +327,6 @@ run_rtlab box "$ref_size" "$ref_spp" "$depth" "$max_threads" 1 "$out/ref_box_rtl
 # rmse: the reference's own noise taken out (MSE times ref_spp / (ref_spp + spp), scripts/peer/cycles_images.py);
 # rmse_raw: as measured.
 echo "scene,renderer,integrator,threads,width,height,spp,depth,render_s,wall_s,render_cpu_s,cpu_s,rmse,rel_rmse,rmse_raw" >"$csv"
-ladder_row() {  # scene renderer integrator threads spp "wall render cpu [render_cpu]" image reference
-  local e w r c rc
-  read -r w r c rc <<<"$6"
-  e=$($images rmse "$7" "$8" "$5" "$ref_spp")
-  echo "$1,$2,$3,$4,${ref_size%x*},${ref_size#*x},$5,$depth,$r,$w,${rc:-},$c,$(sed -n 's/rmse=\([^ ]*\) rel_rmse=\([^ ]*\) rmse_raw=\([^ ]*\)/\1,\2,\3/p' <<<"$e")" >>"$csv"
-}
 echo "4. efficiency ladder at $ref_size, spp $ladder:"
 for scene in $scenes_timed; do
   for threads in $threads_list; do

@@ -322,6 +322,66 @@ def write_pfm_from_exr(exr, pfm, width, height):
         f.write(np.ascontiguousarray(rgb, dtype="<f4").tobytes())
 
 
+def configure_cycles(scene, width, height, spp, bounces, threads, seed, output):
+    """The like-for-like settings of the race (the module's docstring) and a float EXR at `output`."""
+    r = scene.render
+    r.engine = "CYCLES"
+    r.resolution_x, r.resolution_y, r.resolution_percentage = width, height, 100
+    r.pixel_aspect_x = r.pixel_aspect_y = 1.0
+    r.threads_mode = "FIXED"
+    r.threads = threads
+    r.use_compositing = False
+    r.use_sequencer = False
+    r.film_transparent = False
+    r.use_persistent_data = False
+    c = scene.cycles
+    c.device = "CPU"
+    c.feature_set = "SUPPORTED"
+    c.samples = spp
+    c.use_adaptive_sampling = False
+    c.use_denoising = False
+    c.time_limit = 0
+    c.seed = seed
+    c.use_animated_seed = False
+    c.sample_clamp_direct = 0.0
+    c.sample_clamp_indirect = 0.0
+    c.blur_glossy = 0.0  # "Filter Glossy"
+    c.light_sampling_threshold = 0.0
+    c.use_guiding = False
+    c.caustics_reflective = True
+    c.caustics_refractive = True
+    c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = bounces
+    c.volume_bounces = c.transparent_max_bounces = bounces
+    c.min_light_bounces = 0
+    c.pixel_filter_type = "BOX"
+    c.filter_width = 1.0
+    c.film_exposure = 1.0
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
+    scene.view_settings.gamma = 1.0
+    settings = r.image_settings
+    settings.file_format = "OPEN_EXR"
+    settings.color_depth = "32"
+    settings.color_mode = "RGB"
+    settings.exr_codec = "NONE"
+    r.filepath = os.path.abspath(output)
+    r.use_file_extension = False
+
+
+def render_timed(output, pfm, width, height):
+    """bpy.ops.render.render timed (the "render phase" line the race reads), then the PFM copy if asked."""
+    t0, c0 = time.perf_counter(), time.process_time()
+    bpy.ops.render.render(write_still=True)
+    seconds, cpu = time.perf_counter() - t0, time.process_time() - c0
+    print(f"cycles: render phase {seconds:.3f} s ({cpu:.3f} CPU s)")
+    if not os.path.isfile(output):
+        fail(f"Cycles wrote no {output}")
+    if pfm:
+        write_pfm_from_exr(output, pfm, width, height)
+    sys.stdout.flush()
+
+
 def main():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     args = parse_args(argv)
@@ -355,63 +415,16 @@ def main():
     world.cycles.sampling_method = "NONE"
     scene.world = world
 
-    r = scene.render
-    r.engine = "CYCLES"
-    r.resolution_x, r.resolution_y, r.resolution_percentage = width, height, 100
-    r.pixel_aspect_x = r.pixel_aspect_y = 1.0
-    r.threads_mode = "FIXED"
-    r.threads = args["threads"]
-    r.use_compositing = False
-    r.use_sequencer = False
-    r.film_transparent = False
-    r.use_persistent_data = False
+    configure_cycles(scene, width, height, spp, bounces, args["threads"], args["seed"], args["output"])
     c = scene.cycles
-    c.device = "CPU"
-    c.feature_set = "SUPPORTED"
-    c.samples = spp
-    c.use_adaptive_sampling = False
-    c.use_denoising = False
-    c.time_limit = 0
-    c.seed = args["seed"]
-    c.use_animated_seed = False
-    c.sample_clamp_direct = 0.0
-    c.sample_clamp_indirect = 0.0
-    c.blur_glossy = 0.0  # "Filter Glossy"
-    c.light_sampling_threshold = 0.0
-    c.use_guiding = False
-    c.caustics_reflective = True
-    c.caustics_refractive = True
-    c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = bounces
-    c.volume_bounces = c.transparent_max_bounces = bounces
-    c.min_light_bounces = 0
-    c.pixel_filter_type = "BOX"
-    c.filter_width = 1.0
-    c.film_exposure = 1.0
-    scene.view_settings.view_transform = "Standard"
-    scene.view_settings.look = "None"
-    scene.view_settings.exposure = 0.0
-    scene.view_settings.gamma = 1.0
-    settings = r.image_settings
-    settings.file_format = "OPEN_EXR"
-    settings.color_depth = "32"
-    settings.color_mode = "RGB"
-    settings.exr_codec = "NONE"
-    r.filepath = os.path.abspath(args["output"])
-    r.use_file_extension = False
 
     print(f"cycles: {os.path.basename(args['scene'])} {width}x{height}, {triangles} triangles, spp {spp}, "
           f"depth {depth} (max_bounces {bounces}), {args['threads']} threads, seed {args['seed']}, "
           f"pattern {c.sampling_pattern}")
     sys.stdout.flush()
-    t0, c0 = time.perf_counter(), time.process_time()
-    bpy.ops.render.render(write_still=True)
-    seconds, cpu = time.perf_counter() - t0, time.process_time() - c0
-    print(f"cycles: render phase {seconds:.3f} s ({cpu:.3f} CPU s)")
-    if not os.path.isfile(args["output"]):
-        fail(f"Cycles wrote no {args['output']}")
-    if args["pfm"]:
-        write_pfm_from_exr(args["output"], args["pfm"], width, height)
+    render_timed(args["output"], args["pfm"], width, height)
     sys.stdout.flush()
 
 
-main()
+if __name__ == "__main__":  # envmap.py imports the helpers
+    main()
