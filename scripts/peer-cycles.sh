@@ -192,6 +192,7 @@ if [ "$envmap" = 1 ]; then
     echo "\"$machine\",$date_now,$commit,\"$command_line\",$1,$2,$3,$4,${ref_size%x*},${ref_size#*x},$5,$6,$7" >>"$env_csv"
   }
   echo "envmap: $env_scene at $ref_size, depth $depth; converged renders at $ref_spp spp, $max_threads threads"
+  env_row run "$cycles_version" none "$max_threads" "$ref_spp" load_at_start "$load"
   run_rtlab envmap "$ref_size" "$ref_spp" "$depth" "$max_threads" 1 "$out/env_ref_rtlab.pfm" path >/dev/null
   run_cycles envmap "$ref_size" "$ref_spp" "$depth" "$max_threads" 1 "$out/env_ref_cycles.exr" \
     --pfm "$out/env_ref_cycles.pfm" >/dev/null
