@@ -28,7 +28,7 @@ depth D as max_bounces D - 1...) and bilinear lookups as rtlab's. The world is i
 --map-resolution columns (Manual; default twice the image's width, as rtlab's distribution): Cycles builds it
 from the shader's value at each cell's centre, so at the image's own resolution a cell next to the sun (whose
 bilinear spread reaches half-way into it) is drawn as if it held sky alone, and the BSDF samples that land
-there are fireflies (RMSE 10-30 times rtlab's at 16-64 spp on city.exr); at twice the resolution the value
+there are fireflies (RMSE 34 times rtlab's at 16 spp on city.exr); at twice the resolution the value
 of a cell is within a factor of about 2 of every point in it. rtlab weighs each of its 2w x 2h cells by the
 largest texel its lookups blend. Prints "cycles: render phase S s (C CPU s)" as cornell_box.py does.
 """
@@ -225,8 +225,8 @@ def main():
 
     cb.configure_cycles(scene, width, height, spp, bounces, args["threads"], args["seed"], args["output"])
     print(f"cycles: {os.path.basename(args['scene'])} {width}x{height}, map {path} {size[0]}x{size[1]}, "
-          f"importance map {scene.world.cycles.sample_map_resolution}, variant {args['variant']}, spp {spp}, depth {depth} (max_bounces {bounces}), {args['threads']} threads, "
-          f"seed {args['seed']}")
+          f"importance map {scene.world.cycles.sample_map_resolution}, variant {args['variant']}, spp {spp}, "
+          f"depth {depth} (max_bounces {bounces}), {args['threads']} threads, seed {args['seed']}")
     sys.stdout.flush()
     cb.render_timed(args["output"], args["pfm"], width, height)
 
