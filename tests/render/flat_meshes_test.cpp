@@ -1,5 +1,6 @@
 // The small meshes a Scene gathers into one flat triangle tree against the same scene with every mesh on its
 // own tree: the same answers to every query, records bit for bit.
+#include "image_bytes.hpp"
 #include "scene_fixtures.hpp"
 
 #include <rtlab/accel/mesh_shape.hpp>
@@ -19,18 +20,6 @@ using namespace rtlab;
 using namespace rtlab::test;
 
 namespace {
-
-constexpr std::size_t kAlwaysList = std::numeric_limits<std::size_t>::max();
-
-Ray random_ray(std::mt19937& rng) {
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    const Point3 o(8.0f * u(rng), 2.5f + 3.0f * u(rng), -10.0f + 8.0f * u(rng));
-    Vec3 d(u(rng), u(rng), u(rng));
-    if (glm::dot(d, d) < 1e-4f) d = Vec3(0, 0, -1);
-    Ray r{o, glm::normalize(d), 0.0f, kInfinity};
-    if (u(rng) > 0.5f) r.tmax = 1.0f + 4.0f * (u(rng) + 1.0f);  // shadow-ray-like segments
-    return r;
-}
 
 // A soup of `count` triangles of size up to `size`, moved from [0, 10]^3 into the box at `corner`, scaled by s.
 std::shared_ptr<const MeshShape> soup(int count, std::uint32_t seed, float s, Point3 corner) {
@@ -197,8 +186,7 @@ TEST_CASE("a scene with flat meshes renders the image of its meshes on their own
     const RenderResult alone = render_job(job);
     job.scene = std::make_shared<Scene>(s.objects);
     const RenderResult flat = render_job(job);
-    CHECK(std::memcmp(alone.image.pixels().data(), flat.image.pixels().data(),
-                      alone.image.pixel_count() * sizeof(RGB)) == 0);
+    CHECK(same_bytes(alone.image, flat.image));
     CHECK(alone.stats.rays == flat.stats.rays);
     CHECK(alone.stats.rays.refracted > 300);
     CHECK(alone.stats.rays.shadow > 3000);

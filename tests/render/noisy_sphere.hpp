@@ -1,5 +1,7 @@
 #pragma once
 // Test helper: a cheap analytic scene whose pixels differ, and counts of every ray kind, for renderer tests.
+#include "image_bytes.hpp"
+
 #include <rtlab/core/image.hpp>
 #include <rtlab/render/radiance_source.hpp>
 
@@ -21,11 +23,6 @@ RGB noisy_sphere(const Ray& r, RayCounters& counters, Shade&& shade) {
     if (n.y > 0.5f) ++counters.reflected;
     if (n.x > 0.5f) ++counters.refracted;
     return shade(std::max(0.0f, glm::dot(n, glm::normalize(Vec3(1, 1, 1)))));
-}
-
-inline bool same_bytes(const Image& a, const Image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixel_count() * sizeof(RGB)) == 0;
 }
 
 }  // namespace rtlab::test

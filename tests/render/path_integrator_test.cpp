@@ -1,6 +1,7 @@
 // The direct and path integrators end to end through render_job(): each check a number with its standard error
 // (the spread of the pixel means, every pixel being an independent estimate of the same quantity), on small
 // images with few samples and fixed seeds.
+#include "image_bytes.hpp"
 #include "scene_fixtures.hpp"
 
 #include <rtlab/core/error.hpp>
@@ -33,11 +34,6 @@ PixelStats pixel_stats(const Image& image) {
     }
     const double mean = sum / n;
     return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / (n - 1.0)), max};
-}
-
-bool same_bytes(const Image& a, const Image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixel_count() * sizeof(RGB)) == 0;
 }
 
 std::shared_ptr<const Material> lambert_emitting(float albedo, float emission) {

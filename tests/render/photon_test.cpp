@@ -1,6 +1,7 @@
 // The photon tracer and the photon map: photon density against the irradiance a point light gives a plane; the power
 // stored against the power emitted times the albedo of every bounce; the classification of photon paths; and the
 // photon and sppm integrators' images the same bytes for any thread count.
+#include "image_bytes.hpp"
 #include "scene_fixtures.hpp"
 
 #include <rtlab/core/error.hpp>
@@ -30,11 +31,6 @@ constexpr std::uint32_t kScale = 4;
 #else
 constexpr std::uint32_t kScale = 1;
 #endif
-
-bool same_bytes(const Image& a, const Image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixel_count() * sizeof(RGB)) == 0;
-}
 
 bool same_photons(const std::vector<Photon>& a, const std::vector<Photon>& b) {
     if (a.size() != b.size()) return false;

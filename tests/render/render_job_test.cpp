@@ -1,3 +1,4 @@
+#include "image_bytes.hpp"
 #include "scene_fixtures.hpp"
 
 #include <rtlab/core/error.hpp>
@@ -13,13 +14,6 @@ using namespace rtlab;
 using namespace rtlab::test;
 
 namespace {
-
-constexpr std::size_t kAlwaysList = std::numeric_limits<std::size_t>::max();
-
-bool same_bytes(const Image& a, const Image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixel_count() * sizeof(RGB)) == 0;
-}
 
 std::shared_ptr<const Shape> quad_x(float x0, float x1, float z) {
     return std::make_shared<Quad>(Point3(x0, -1, z), Vec3(x1 - x0, 0, 0), Vec3(0, 2, 0));

@@ -7,12 +7,17 @@
 #include <rtlab/shading/light.hpp>
 #include <rtlab/shading/material.hpp>
 
+#include <cstddef>
+#include <limits>
 #include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace rtlab::test {
+
+/// SceneOptions::tree_threshold for a plain list at any size.
+inline constexpr std::size_t kAlwaysList = std::numeric_limits<std::size_t>::max();
 
 inline std::shared_ptr<const Material> material(const std::string& name, Params p = {}) {
     static const MaterialRegistry registry = make_material_registry();
@@ -32,6 +37,17 @@ inline std::shared_ptr<const Light> point_light(const Point3& at, float intensit
     Params p;
     p.set("position", list(at)).set("intensity", intensity);
     return light("point", p);
+}
+
+/// A ray from around the random scenes' objects in a random direction; half are shadow-ray-like segments.
+inline Ray random_ray(std::mt19937& rng) {
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    const Point3 o(8.0f * u(rng), 2.5f + 3.0f * u(rng), -10.0f + 8.0f * u(rng));
+    Vec3 d(u(rng), u(rng), u(rng));
+    if (glm::dot(d, d) < 1e-4f) d = Vec3(0, 0, -1);
+    Ray r{o, glm::normalize(d), 0.0f, kInfinity};
+    if (u(rng) > 0.5f) r.tmax = 1.0f + 4.0f * (u(rng) + 1.0f);  // shadow-ray-like segments
+    return r;
 }
 
 /// `spheres` random spheres over a floor and `quads` random quads, a tenth of each mirror and a tenth glass

@@ -1,3 +1,4 @@
+#include "image_bytes.hpp"
 #include "scene_fixtures.hpp"
 
 #include <rtlab/accel/mesh_shape.hpp>
@@ -23,23 +24,6 @@ using namespace rtlab;
 using namespace rtlab::test;
 
 namespace {
-
-constexpr std::size_t kAlwaysList = std::numeric_limits<std::size_t>::max();
-
-bool same_bytes(const Image& a, const Image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixel_count() * sizeof(RGB)) == 0;
-}
-
-Ray random_ray(std::mt19937& rng) {
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    const Point3 o(8.0f * u(rng), 2.5f + 3.0f * u(rng), -10.0f + 8.0f * u(rng));
-    Vec3 d(u(rng), u(rng), u(rng));
-    if (glm::dot(d, d) < 1e-4f) d = Vec3(0, 0, -1);
-    Ray r{o, glm::normalize(d), 0.0f, kInfinity};
-    if (u(rng) > 0.5f) r.tmax = 1.0f + 4.0f * (u(rng) + 1.0f);  // shadow-ray-like segments
-    return r;
-}
 
 std::shared_ptr<const Camera> view(int w, int h) {
     return std::make_shared<PinholeCamera>(CameraSpec{
