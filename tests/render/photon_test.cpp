@@ -95,6 +95,35 @@ RenderJob mixed_job(IntegratorKind kind) {
     return job;
 }
 
+// A glass ball of radius 0.4 floating over a diffuse floor, seen from above (16 x 16), with `lights` added: the
+// scene of the tests that photon and sppm count no light twice; path depth 6, sobol, 2 threads.
+RenderJob glass_ball_job(std::vector<SceneObject> lights, unsigned seed) {
+    std::vector<SceneObject> objects{
+        {std::make_shared<Quad>(Point3(-2, 0, 2), Vec3(4, 0, 0), Vec3(0, 0, -4)), lambert(RGB(0.8f)), {}, "floor"},
+        {std::make_shared<Sphere>(Point3(0.0f, 0.9f, 0), 0.4f), material("glass"), {}, "glass"}};
+    for (SceneObject& l : lights) objects.push_back(std::move(l));
+    RenderJob job;
+    job.camera = std::make_shared<PinholeCamera>(CameraSpec{
+        .eye = {0, 2.0f, 1.6f}, .look_at = {0, 0.0f, 0}, .vertical_fov_degrees = 40.0f, .width = 16, .height = 16});
+    job.scene = std::make_shared<Scene>(std::move(objects));
+    job.path.max_depth = 6;
+    job.settings.pattern = PixelPattern::sobol;
+    job.settings.seed = seed;
+    job.settings.threads = 2;
+    return job;
+}
+
+// The image's mean channel value and its standard error (from the per-pixel variances of a progressive render).
+std::pair<double, double> mean_of(const RenderResult& r) {
+    double sum = 0.0, variance = 0.0;
+    for (const RGB& c : r.image.pixels()) sum += channel_mean(c);
+    if (r.buffer)
+        for (int y = 0; y < r.image.height(); ++y)
+            for (int x = 0; x < r.image.width(); ++x) variance += channel_mean(r.buffer->mean_variance(x, y));
+    const auto n = static_cast<double>(r.image.pixel_count());
+    return {sum / n, std::sqrt(variance) / n};
+}
+
 }  // namespace
 
 TEST_CASE("photons are the same for any thread count and kept in index order", "[photon]") {
@@ -306,29 +335,12 @@ TEST_CASE("photon and sppm count no light twice: the caustic under a glass ball"
     // photon map's blur; the light through the glass is about 40% of the image (what `direct` misses), so counting a
     // part twice or missing it shows. Measured: path 0.0482 +- 0.0003 at 4096 spp, photon 0.0491 with 50000 photons
     // and 0.0484 with a million (the density estimate's bias), sppm 0.0483.
-    RenderJob job;
-    job.camera = std::make_shared<PinholeCamera>(CameraSpec{
-        .eye = {0, 2.0f, 1.6f}, .look_at = {0, 0.0f, 0}, .vertical_fov_degrees = 40.0f, .width = 16, .height = 16});
-    job.scene = std::make_shared<Scene>(std::vector<SceneObject>{
-        {std::make_shared<Quad>(Point3(-2, 0, 2), Vec3(4, 0, 0), Vec3(0, 0, -4)), lambert(RGB(0.8f)), {}, "floor"},
-        {std::make_shared<Sphere>(Point3(0.0f, 0.9f, 0), 0.4f), material("glass"), {}, "glass"},
-        {std::make_shared<Quad>(Point3(-0.3f, 2.6f, -0.3f), Vec3(0.6f, 0, 0), Vec3(0, 0, 0.6f)),
-         emitting(5.0f),
-         {},
-         "lamp"}});
-    job.path.max_depth = 6;
-    job.settings.pattern = PixelPattern::sobol;
-    job.settings.seed = 9;
-    job.settings.threads = 2;
-    auto mean_of = [](const RenderResult& r) {
-        double sum = 0.0, variance = 0.0;
-        for (const RGB& c : r.image.pixels()) sum += channel_mean(c);
-        if (r.buffer)
-            for (int y = 0; y < r.image.height(); ++y)
-                for (int x = 0; x < r.image.width(); ++x) variance += channel_mean(r.buffer->mean_variance(x, y));
-        const auto n = static_cast<double>(r.image.pixel_count());
-        return std::pair<double, double>(sum / n, std::sqrt(variance) / n);
-    };
+    RenderJob job =
+        glass_ball_job({{std::make_shared<Quad>(Point3(-0.3f, 2.6f, -0.3f), Vec3(0.6f, 0, 0), Vec3(0, 0, 0.6f)),
+                         emitting(5.0f),
+                         {},
+                         "lamp"}},
+                       9);
     job.integrator = IntegratorKind::path;
     job.settings.spp = 1024 / static_cast<int>(kScale);
     const auto [path, se] = mean_of(render_job(job));
@@ -364,26 +376,8 @@ TEST_CASE("photon and sppm under an environment map: its photons make the causti
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 16; ++x) sky.at(x, y) = y < 4 ? RGB(0.15f, 0.2f, 0.3f) : RGB(0.05f);
     sky.at(7, 1) = sky.at(8, 1) = RGB(60.0f, 55.0f, 45.0f);
-    RenderJob job;
-    job.camera = std::make_shared<PinholeCamera>(CameraSpec{
-        .eye = {0, 2.0f, 1.6f}, .look_at = {0, 0.0f, 0}, .vertical_fov_degrees = 40.0f, .width = 16, .height = 16});
-    job.scene = std::make_shared<Scene>(std::vector<SceneObject>{
-        {std::make_shared<Quad>(Point3(-2, 0, 2), Vec3(4, 0, 0), Vec3(0, 0, -4)), lambert(RGB(0.8f)), {}, "floor"},
-        {std::make_shared<Sphere>(Point3(0.0f, 0.9f, 0), 0.4f), material("glass"), {}, "glass"}});
+    RenderJob job = glass_ball_job({}, 11);
     job.environment = std::make_shared<EnvironmentMap>(std::move(sky));
-    job.path.max_depth = 6;
-    job.settings.pattern = PixelPattern::sobol;
-    job.settings.seed = 11;
-    job.settings.threads = 2;
-    auto mean_of = [](const RenderResult& r) {
-        double sum = 0.0, variance = 0.0;
-        for (const RGB& c : r.image.pixels()) sum += channel_mean(c);
-        if (r.buffer)
-            for (int y = 0; y < r.image.height(); ++y)
-                for (int x = 0; x < r.image.width(); ++x) variance += channel_mean(r.buffer->mean_variance(x, y));
-        const auto n = static_cast<double>(r.image.pixel_count());
-        return std::pair<double, double>(sum / n, std::sqrt(variance) / n);
-    };
     job.integrator = IntegratorKind::path;
     job.settings.spp = 1024 / static_cast<int>(kScale);
     const auto [path, se] = mean_of(render_job(job));
