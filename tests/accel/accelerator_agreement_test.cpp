@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <span>
+
 #include "agreement.hpp"
 #include "test_meshes.hpp"
 
@@ -60,9 +62,11 @@ std::vector<std::string> methods_at_width(int width) {
 // Embree is checked only on ordinary meshes: on the adversarial ones (rays starting on a plane of 1000
 // coincident quads) its own arithmetic legitimately gives a tiny positive t where rtlab's tests give 0.
 
+constexpr TriangleTest kAllTests[] = {TriangleTest::watertight, TriangleTest::moller, TriangleTest::plane};
+
 void check_all_methods(const std::string& label, const TriangleMesh& mesh, const std::vector<Ray>& rays,
-                       bool include_naive, bool include_embree = true) {
-    for (TriangleTest test : {TriangleTest::watertight, TriangleTest::moller, TriangleTest::plane}) {
+                       bool include_naive, bool include_embree = true, std::span<const TriangleTest> tests = kAllTests) {
+    for (TriangleTest test : tests) {
         BuildOptions options;
         options.triangle_test = test;
         const auto reference = test::answers(*make_accelerator("brute", mesh, options), rays);
@@ -229,6 +233,31 @@ TEST_CASE("rays lying in interior split planes of a cube lattice at coordinates 
                         }
         }
         check_all_methods("cube lattice at scale " + std::to_string(scale), lattice, rays, true, false);
+    }
+}
+
+TEST_CASE("leaf packets skipped by their cull boxes hide no hit far from the origin and from far away", "[accel]") {
+    // A kd leaf skips a packet of triangles when the ray misses the packet's box within the leaf's interval
+    // (kd_packets.hpp). Its margin is relative to the box's and the origin's coordinates: here a small sphere
+    // sits 1e4 to 3e4 from the origin, hit by rays from the origin itself (3.7e4 away), aimed exactly at its
+    // vertices and edge midpoints, where the watertight test is at its rounding limits, and by rays starting on
+    // its vertices, going in and out.
+    for (float radius : {1.0f, 100.0f}) {
+        const TriangleMesh sphere = test::icosphere(3, radius, Point3(1e4f, -2e4f, 3e4f));
+        std::vector<Ray> rays = standard_rays(sphere, 1000, 8, 8);
+        const Point3 centre(1e4f, -2e4f, 3e4f);
+        for (const auto& tri : sphere.triangles) {
+            const Point3 a = sphere.positions[tri[0]], b = sphere.positions[tri[1]];
+            for (const Point3& target : {a, 0.5f * (a + b)}) {
+                rays.push_back(Ray{Point3(0.0f), target});
+                rays.push_back(Ray{target, target - centre});
+                rays.push_back(Ray{target, centre - target});
+            }
+        }
+        // Watertight only: the culling is the watertight test's, and the other two tests' own rounding at
+        // 3e4 differs between structures by more than same_hit's tolerance.
+        const TriangleTest watertight[] = {TriangleTest::watertight};
+        check_all_methods("far sphere of radius " + std::to_string(radius), sphere, rays, false, false, watertight);
     }
 }
 

@@ -66,15 +66,15 @@ private:
             // Packets of 8: the walk stays in the baseline instruction set (it gains nothing from AVX2) and
             // calls the AVX2 leaf test, about once per ray.
             if (m_packets.width() == 8) {
-                return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest) {
+                return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest, float from, float to) {
                     return kd::test_packets_avx2<Test, AnyHit>(m_packets, r, leaf.primitive_offset(),
-                                                               leaf.primitive_count(), closest, hit);
+                                                               leaf.primitive_count(), closest, hit, from, to);
                 });
             }
 #endif
-            return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest) {
+            return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest, float from, float to) {
                 return kd::test_packets<Test, AnyHit, 4>(m_packets, r, leaf.primitive_offset(), leaf.primitive_count(),
-                                                         closest, hit);
+                                                         closest, hit, from, to);
             });
         });
     }
@@ -102,11 +102,39 @@ private:
                 count == 1
                     ? std::span<const std::uint32_t>(&one, 1)
                     : std::span<const std::uint32_t>(m_tree.primitive_indices.data() + node.primitive_offset(), count);
-            const std::uint32_t first = m_packets.add_leaf(mesh, triangles);
+            const std::uint32_t first = m_packets.add_leaf(mesh, spatial_order(mesh, triangles));
             node = KdNode::leaf(m_packets.packets_for(count), first);
         }
         std::vector<std::uint32_t>().swap(m_tree.primitive_indices);
         m_packets.shrink();
+    }
+
+    // The leaf's triangles ordered along a Morton curve over their centroids, so that each packet's cull
+    // box is small. Ties keep the leaf's order: the layout is a function of the tree alone.
+    static std::vector<std::uint32_t> spatial_order(const TriangleMesh& mesh, std::span<const std::uint32_t> triangles) {
+        std::vector<std::uint32_t> order(triangles.begin(), triangles.end());
+        if (order.size() <= 1) return order;
+        AABB centroids;
+        for (std::uint32_t i : order) centroids.expand(mesh.triangle_bounds(i).center());
+        const Vec3 extent = centroids.extent();
+        auto code = [&](std::uint32_t i) {
+            const Point3 c = mesh.triangle_bounds(i).center();
+            std::uint32_t key = 0;
+            std::uint32_t cell[3];
+            for (int a = 0; a < 3; ++a) {
+                const float x = extent[a] > 0.0f ? (c[a] - centroids.lo[a]) / extent[a] : 0.0f;
+                cell[a] = static_cast<std::uint32_t>(std::clamp(x, 0.0f, 1.0f) * 1023.0f);
+            }
+            for (int bit = 9; bit >= 0; --bit)
+                for (int a = 0; a < 3; ++a) key = key << 1 | ((cell[a] >> bit) & 1u);
+            return key;
+        };
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed;
+        keyed.reserve(order.size());
+        for (std::uint32_t i : order) keyed.emplace_back(code(i), i);
+        std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (std::size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].second;
+        return order;
     }
 
     std::string m_name;
