@@ -2,6 +2,8 @@
 //   --spp N --aa-threshold T --aa-depth D --depth D --threads N --seed N --tonemap OP --quiet --data-dir DIR...]
 //   [--noise E] [--time S] [--uniform] [--variance] [--plugin FILE.so]... [--plugin-dir DIR]... | --list [--verbose]
 // rtlab-render SCENE.json --sample-range A:B -o SHARE.rtshare [...]: one share of a frame, for rtlab-merge.
+// rtlab-render SCENE.json ... --record-rays NAME --record-out PREFIX [--record-max N]: also the rays the object NAME
+//   answers, in its shape's own space, into PREFIX.closest.rays and PREFIX.shadow.rays (one render thread).
 // Exit status: 0 rendered, 1 bad scene or failed write (nothing written), 2 bad command line, 130 stopped by
 // Ctrl-C (what was rendered is written).
 #include <rtlab/accel/ray_io.hpp>
