@@ -6,9 +6,10 @@
 # the bunny's box; then rtlab-accel replays the four ray files against kd-sah and Embree (rtcIntersect1 and
 # rtcOccluded1) on the same file, on 1 and 2 threads. rtlab-accel times closest hits and any hits on every file:
 # for a .closest.rays file the closest column is the one the render asked, for a .shadow.rays file the any-hit one.
-# Writes docs/data/path_rays_bunny.csv (rtlab-accel's rows, ray_set = the file's name), path_rays_bunny_summary.csv
-# (kd-sah/Embree on the column that matters) and path_rays_bunny.meta.json; the ray files (about 200 MB) stay in
-# --out.
+# Each file is also split by where its rays start (inside the bunny's box or outside; up to 400,000 of each) and the
+# parts replayed on 1 thread. Writes docs/data/path_rays_bunny.csv (rtlab-accel's rows, ray_set = the file's name),
+# path_rays_bunny_summary.csv (kd-sah/Embree on the column that matters) and path_rays_bunny.meta.json; the ray
+# files (about 300 MB) stay in --out.
 #
 #   scripts/record-path-rays.sh [--out DIR] [--threads "1 2"] [--runs N] [--replay-only] [--no-build]
 #
@@ -31,7 +32,7 @@ while [ $# -gt 0 ]; do
     --runs) runs=$2; shift ;;
     --no-build) build=0 ;;
     --replay-only) replay_only=1 ;;
-    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "record-path-rays: unknown argument '$1' (see --help)" >&2; exit 1 ;;
   esac
   shift
@@ -66,6 +67,31 @@ rays=()
 record scenes/cornell_box_bunny.json bunny 256x256 32
 record scenes/bunny_envmap.json mesh 320x240 40
 
+# Where kd-sah loses most: each file split by where its rays start, inside the bunny's box (most of them leave its
+# surface) or outside, up to 400,000 rays of each (the first, in the render's order), replayed on 1 thread.
+split=()
+for stem in cornell_box_bunny bunny_envmap; do
+  for kind in closest shadow; do
+    split+=(--rays "$out/$stem.$kind.inside.rays" --rays "$out/$stem.$kind.outside.rays")
+  done
+done
+/usr/bin/python3 - "$mesh" "$out" <<'EOF'
+import numpy as np, sys
+mesh, out = sys.argv[1:3]
+v = np.array([l.split()[1:4] for l in open(mesh) if l.startswith("v ")], dtype=np.float32)
+lo, hi = v.min(0), v.max(0)
+margin = 1e-3 * np.linalg.norm(hi - lo)
+for stem in ("cornell_box_bunny", "bunny_envmap"):
+    for kind in ("closest", "shadow"):
+        data = np.fromfile(f"{out}/{stem}.{kind}.rays", dtype=np.uint8)
+        rays = np.frombuffer(data[16:], dtype="<f4").reshape(-1, 8)
+        inside = np.all((rays[:, :3] >= lo - margin) & (rays[:, :3] <= hi + margin), axis=1)
+        for where, mask in (("inside", inside), ("outside", ~inside)):
+            part = rays[mask][:400000]
+            with open(f"{out}/{stem}.{kind}.{where}.rays", "wb") as f:
+                f.write(b"RTRAYS01" + np.uint64(len(part)).tobytes() + part.tobytes())
+EOF
+
 csv=$data/$name.csv
 rm -f "$csv"
 for threads in $threads_list; do
@@ -73,6 +99,9 @@ for threads in $threads_list; do
     --csv "$out/accel_threads$threads.csv" | tee "$out/accel_threads$threads.log"
   if [ -f "$csv" ]; then tail -n +2 "$out/accel_threads$threads.csv" >>"$csv"; else cp "$out/accel_threads$threads.csv" "$csv"; fi
 done
+"$bin/rtlab-accel" --mesh "$mesh" --method kd-sah --method embree --threads 1 --runs "$runs" "${split[@]}" \
+  --csv "$out/accel_split.csv" | tee "$out/accel_split.log"
+tail -n +2 "$out/accel_split.csv" >>"$csv"
 
 machine="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores, $(uname -sr)"
 recorded=$(grep -h '^recorded ' "$out"/cornell_box_bunny.log "$out"/bunny_envmap.log | tr '\n' ';')
@@ -85,17 +114,20 @@ rows = list(csv.DictReader(open(rows_path)))
 by = {(r["method"], r["threads"], r["ray_set"]): r for r in rows}
 with open(summary_path, "w", newline="") as f:
     w = csv.writer(f)
-    w.writerow(["scene", "query", "threads", "rays", "kd_sah_mrays_s", "embree_mrays_s", "ratio", "mismatches"])
+    w.writerow(["scene", "query", "start", "threads", "rays", "kd_sah_mrays_s", "embree_mrays_s", "ratio",
+                "mismatches"])
     for (method, threads, ray_set), r in by.items():
         if method != "kd-sah":
             continue
         e = by[("embree", threads, ray_set)]
-        scene, kind = ray_set.split(".")[0], ray_set.split(".")[1]
+        parts = ray_set.split(".")
+        scene, kind, start = parts[0], parts[1], parts[2] if len(parts) == 4 else "anywhere"
         column = "closest_mrays_s" if kind == "closest" else "anyhit_mrays_s"
         k, m = float(r[column]), float(e[column])
-        w.writerow([scene, "closest-hit" if kind == "closest" else "any-hit", threads, r["rays"], f"{k:.3f}",
+        w.writerow([scene, "closest-hit" if kind == "closest" else "any-hit", start, threads, r["rays"], f"{k:.3f}",
                     f"{m:.3f}", f"{k / m:.3f}", r["mismatches"]])
-        print(f"{scene:18} {kind:8} threads {threads}: kd-sah {k:6.2f} Mrays/s, embree {m:6.2f}, ratio {k / m:.3f}")
+        print(f"{scene:18} {kind:8} {start:9} threads {threads}: kd-sah {k:6.2f} Mrays/s, embree {m:6.2f}, "
+              f"ratio {k / m:.3f}")
 json.dump(dict(machine=machine, date=date, command=command, recorded=recorded,
                medians="throughput: medians of the timed rounds (methods take turns in each round); the ray "
                        "files are recorded on one thread by rtlab-render --record-rays"),
