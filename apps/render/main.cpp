@@ -2,8 +2,11 @@
 //   --spp N --aa-threshold T --aa-depth D --depth D --threads N --seed N --tonemap OP --quiet --data-dir DIR...]
 //   [--noise E] [--time S] [--uniform] [--variance] [--plugin FILE.so]... [--plugin-dir DIR]... | --list [--verbose]
 // rtlab-render SCENE.json --sample-range A:B -o SHARE.rtshare [...]: one share of a frame, for rtlab-merge.
+// rtlab-render SCENE.json ... --record-rays NAME --record-out PREFIX [--record-max N]: also the rays the object NAME
+//   answers, in its shape's own space, into PREFIX.closest.rays and PREFIX.shadow.rays (one render thread).
 // Exit status: 0 rendered, 1 bad scene or failed write (nothing written), 2 bad command line, 130 stopped by
 // Ctrl-C (what was rendered is written).
+#include <rtlab/accel/ray_io.hpp>
 #include <rtlab/app/course_app.hpp>
 #include <rtlab/app/progress_bar.hpp>
 #include <rtlab/app/stop_on_interrupt.hpp>
@@ -11,6 +14,7 @@
 #include <rtlab/core/param_spec.hpp>
 #include <rtlab/render/image_output.hpp>
 #include <rtlab/render/noise_target.hpp>
+#include <rtlab/render/ray_recorder.hpp>
 #include <rtlab/render/render_job.hpp>
 #include <rtlab/render/sample_share.hpp>
 #include <rtlab/scene/plugin.hpp>
@@ -21,7 +25,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "options.hpp"
 #include "scene_hash.hpp"
@@ -57,6 +63,59 @@ void check_progressive(const rtlab::app::RenderOptions& options, const rtlab::Lo
     if (!options.sample_range && !rtlab::supports_noise_target(scene.job.integrator))
         throw UsageError(flag + ": the " + std::string(rtlab::integrator_name(scene.job.integrator)) +
                          " integrator is biased in a way the half-image estimate cannot see; use path or direct");
+}
+
+std::filesystem::path record_file(const rtlab::app::RecordOptions& record, const char* kind) {
+    return record.prefix.string() + "." + kind + ".rays";
+}
+
+/// --record-rays: the named object's shape under a recorder, the scene built again around it, one render thread.
+/// Both files are written (empty) first, so that a path that cannot be written fails before the render.
+std::shared_ptr<rtlab::RayRecorder> start_recording(const rtlab::app::RecordOptions& record,
+                                                    rtlab::LoadedScene& scene) {
+    std::vector<rtlab::SceneObject> objects = scene.job.scene->objects();
+    std::shared_ptr<rtlab::RayRecorder> recorder;
+    try {
+        recorder = rtlab::record_object_rays(
+            objects, record.object, static_cast<std::size_t>(record.max.value_or(rtlab::app::kDefaultRecordMax)));
+    } catch (const rtlab::Error& e) {
+        throw rtlab::Error("--record-rays " + record.object + ": " + e.what());
+    }
+    for (const char* kind : {"closest", "shadow"}) {
+        try {
+            rtlab::app::prepare_output(record_file(record, kind));
+            rtlab::write_ray_file(record_file(record, kind), {});
+        } catch (const rtlab::Error& e) {
+            throw rtlab::Error("--record-out " + record.prefix.string() + ": " + e.what());
+        }
+    }
+    scene.job.scene = std::make_shared<const rtlab::Scene>(std::move(objects));
+    scene.job.settings.threads = 1;
+    return recorder;
+}
+
+/// Writes the recorded rays (what there is, after Ctrl-C too) and says what they are.
+void finish_recording(const rtlab::app::RecordOptions& record, const rtlab::RayRecorder& recorder, bool quiet) {
+    rtlab::write_ray_file(record_file(record, "closest"), recorder.closest_rays());
+    rtlab::write_ray_file(record_file(record, "shadow"), recorder.shadow_rays());
+    if (quiet) return;
+    const auto line = [&](const char* kind, const rtlab::RayRecorder::Counts& c, std::size_t positive,
+                          const char* positive_name, const char* file) {
+        const double share = c.kept == 0 ? 0.0 : 100.0 * static_cast<double>(positive) / static_cast<double>(c.kept);
+        fmt::print("recorded {}: {} {} queries, {} overlapping its bounds; wrote {} ({:.1f}% {}) to {}{}\n",
+                   record.object, c.answered, kind, c.overlapping, c.kept, share, positive_name,
+                   record_file(record, file).string(),
+                   c.kept < c.overlapping ? fmt::format(" (--record-max {}: {} more not written)",
+                                                        recorder.max_per_kind(), c.overlapping - c.kept)
+                                          : "");
+    };
+    const auto& answers = recorder.closest_answers();
+    const auto hits = static_cast<std::size_t>(std::count_if(
+        answers.begin(), answers.end(), [](const rtlab::RayRecorder::Answer& a) { return a.t < rtlab::kInfinity; }));
+    const auto& blocked = recorder.shadow_blocked();
+    const auto blockers = static_cast<std::size_t>(std::count(blocked.begin(), blocked.end(), 1));
+    line("closest-hit", recorder.closest_counts(), hits, "hit", "closest");
+    line("shadow", recorder.shadow_counts(), blockers, "blocked", "shadow");
 }
 
 /// One share of the frame: samples [A, B) of every pixel into a .rtshare file.
@@ -147,6 +206,8 @@ int run(const rtlab::app::RenderOptions& options, const char* argv0) {
     rtlab::app::check_sampling(settings, common);
     const std::filesystem::path output = common.output.empty() ? scene.output : common.output;
     if (output.empty()) throw rtlab::Error(options.scene.string() + ": no output: give -o FILE or render.output");
+    const std::shared_ptr<rtlab::RayRecorder> recorder =
+        options.record.object.empty() ? nullptr : start_recording(options.record, scene);
     if (options.sample_range) {
         rtlab::app::prepare_output(output);
         for (const auto& w : scene.warnings) fmt::print(stderr, "rtlab-render: warning: {}\n", w);
@@ -157,6 +218,7 @@ int run(const rtlab::app::RenderOptions& options, const char* argv0) {
         if (bar.enabled()) callbacks.progress = [&bar](const rtlab::RenderProgress& p) { bar.update(p); };
         const int status = render_share(options, scene, output, callbacks);
         bar.finish();
+        if (recorder) finish_recording(options.record, *recorder, common.quiet);
         return status;
     }
     const rtlab::OutputFormat format = rtlab::output_format(output);  // an unknown extension fails now
@@ -216,6 +278,7 @@ int run(const rtlab::app::RenderOptions& options, const char* argv0) {
         fmt::print("{} {}{}\n", s.cancelled ? "stopped; wrote what was rendered to" : "wrote", output.string(),
                    s.cancelled ? fmt::format(" ({} of {} tiles)", s.tiles_done, s.tiles_total) : "");
     }
+    if (recorder) finish_recording(options.record, *recorder, common.quiet);
     if (common.quiet && result.stats.cancelled)
         fmt::print(stderr, "rtlab-render: stopped; wrote what was rendered to {}\n", output.string());
     return result.stats.cancelled ? rtlab::app::kExitInterrupted : rtlab::app::kExitDone;

@@ -49,7 +49,7 @@ SampleRange parse_sample_range(const std::string& text) {
 std::optional<int> parse_options(int argc, char** argv, RenderOptions& o) {
     CommandLine cli("rtlab-render",
                     "rtlab-render: render a JSON scene file (docs/scene-format.md) to PNG, EXR, HDR or PFM");
-    std::string scene, range;
+    std::string scene, range, record_out;
     cli.add_positional("scene", scene, "the scene file (.json)");
     o.common.other_outputs = {".rtshare"};
     cli.add_common(o.common, make_tone_registry().names());
@@ -72,6 +72,19 @@ std::optional<int> parse_options(int argc, char** argv, RenderOptions& o) {
                  "A:B: render samples A to B - 1 of every pixel into a share file (-o FILE.rtshare) for rtlab-merge; "
                  "A a multiple of 64",
                  [](const std::string& raw) { (void)parse_sample_range(raw); });
+    cli.add_text("--record-rays", o.record.object,
+                 "NAME: record the closest-hit and shadow queries the object of that name answers whose segment "
+                 "overlaps its bounds, in its shape's own space (under its transforms: the rays its mesh's "
+                 "structure receives), into --record-out's two ray files (RTRAYS01); renders on one thread",
+                 [](const std::string& raw) {
+                     if (raw.empty()) throw UsageError("--record-rays: give the name of one of the scene's objects");
+                 });
+    cli.add_text("--record-out", record_out,
+                 "PREFIX: with --record-rays, write PREFIX.closest.rays and PREFIX.shadow.rays");
+    cli.add_integer("--record-max", o.record.max, 1, 100000000,
+                    fmt::format("with --record-rays: keep at most this many rays of each kind, count the rest "
+                                "(default {})",
+                                kDefaultRecordMax));
     if (const auto status = cli.parse(argc, argv)) return status;
     if (o.verbose && !o.list) return cli.usage_error("--verbose goes with --list");
     if (!o.list && scene.empty()) return cli.usage_error("give a scene file (or --list); --help shows the options");
@@ -92,6 +105,21 @@ std::optional<int> parse_options(int argc, char** argv, RenderOptions& o) {
         return cli.usage_error("-o " + o.common.output.string() + ": a share file needs --sample-range A:B");
     }
     if (o.uniform && !o.noise && !o.seconds) return cli.usage_error("--uniform goes with --noise or --time");
+    if (o.record.object.empty() && (!record_out.empty() || o.record.max))
+        return cli.usage_error(std::string(record_out.empty() ? "--record-max" : "--record-out") +
+                               " goes with --record-rays NAME");
+    if (!o.record.object.empty()) {
+        if (record_out.empty())
+            return cli.usage_error("--record-rays " + o.record.object +
+                                   ": give --record-out PREFIX (the files PREFIX.closest.rays and PREFIX.shadow.rays)");
+        // One thread answers the queries in the same order every run: the files are reproducible.
+        if (o.common.threads && *o.common.threads != 1)
+            return cli.usage_error(
+                "--record-rays renders on one thread, so that the ray files are the same every "
+                "run: leave out --threads " +
+                std::to_string(*o.common.threads));
+        o.record.prefix = record_out;
+    }
     if (o.variance && !o.common.output.empty() && !has_extension(o.common.output, ".exr"))
         return cli.usage_error("--variance needs EXR output (-o FILE.exr), not " + o.common.output.string());
     return std::nullopt;

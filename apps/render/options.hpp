@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace rtlab::app {
@@ -21,6 +22,17 @@ struct SampleRange {
     std::uint32_t first = 0, end = 0;
 };
 
+/// \brief --record-rays NAME --record-out PREFIX [--record-max N]: the rays one object answers, in its shape's own
+/// space, into PREFIX.closest.rays and PREFIX.shadow.rays (rtlab/render/ray_recorder.hpp).
+struct RecordOptions {
+    std::string object;  ///< empty: no recording
+    std::filesystem::path prefix;
+    std::optional<int> max;  ///< rays kept of each kind (default kDefaultRecordMax)
+};
+
+/// --record-max's default: 128 MB of rays of each kind at most.
+inline constexpr int kDefaultRecordMax = 4000000;
+
 struct RenderOptions {
     std::filesystem::path scene;
     CommonOptions common;  ///< common.output empty: the scene's render.output
@@ -32,6 +44,7 @@ struct RenderOptions {
     bool uniform = false;                     ///< --uniform: no adaptive sampling with --noise or --time
     bool variance = false;                    ///< --variance: the EXR output carries the variance of each pixel's mean
     std::optional<SampleRange> sample_range;  ///< --sample-range A:B: write a share file (.rtshare)
+    RecordOptions record;
 };
 
 /// Parses the command line. Returns the exit status when the program should stop now (--help, a usage
