@@ -65,7 +65,8 @@ std::vector<std::string> methods_at_width(int width) {
 constexpr TriangleTest kAllTests[] = {TriangleTest::watertight, TriangleTest::moller, TriangleTest::plane};
 
 void check_all_methods(const std::string& label, const TriangleMesh& mesh, const std::vector<Ray>& rays,
-                       bool include_naive, bool include_embree = true, std::span<const TriangleTest> tests = kAllTests) {
+                       bool include_naive, bool include_embree = true,
+                       std::span<const TriangleTest> tests = kAllTests) {
     for (TriangleTest test : tests) {
         BuildOptions options;
         options.triangle_test = test;

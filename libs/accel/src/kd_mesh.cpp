@@ -7,6 +7,7 @@
 #include "mesh_triangles.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -60,22 +61,32 @@ private:
     template <bool AnyHit>
     bool trace(const Ray& ray, MeshHit& hit) const {
         return accel::dispatch_triangle_test(m_packets.test(), [&]<TriangleTest Test>() {
-            const kd::PacketRay<Test> r(ray);
-            if (!r.valid()) return false;
+            const BoxRay box_ray(ray);
+            // The triangle tests' per-ray data, made at the first leaf: most queries of a scene's meshes miss
+            // the tree's box or reach no leaf.
+            std::optional<kd::PacketRay<Test>> r;
+            auto packet_ray = [&]() -> const kd::PacketRay<Test>* {
+                if (!r) r.emplace(ray, box_ray);
+                return r->valid() ? &*r : nullptr;
+            };
 #if RTLAB_KD_HAVE_AVX2_LEAVES
             // Packets of 8: the walk stays in the baseline instruction set (it gains nothing from AVX2) and
             // calls the AVX2 leaf test, about once per ray.
             if (m_packets.width() == 8) {
-                return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest, float from, float to) {
-                    return kd::test_packets_avx2<Test, AnyHit>(m_packets, r, leaf.primitive_offset(),
-                                                               leaf.primitive_count(), closest, hit, from, to);
-                });
+                return kd_traverse<AnyHit>(
+                    m_tree, ray, box_ray, [&](const KdNode& leaf, float& closest, float from, float to) {
+                        const kd::PacketRay<Test>* p = packet_ray();
+                        return p && kd::test_packets_avx2<Test, AnyHit>(m_packets, *p, leaf.primitive_offset(),
+                                                                        leaf.primitive_count(), closest, hit, from, to);
+                    });
             }
 #endif
-            return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest, float from, float to) {
-                return kd::test_packets<Test, AnyHit, 4>(m_packets, r, leaf.primitive_offset(), leaf.primitive_count(),
-                                                         closest, hit, from, to);
-            });
+            return kd_traverse<AnyHit>(
+                m_tree, ray, box_ray, [&](const KdNode& leaf, float& closest, float from, float to) {
+                    const kd::PacketRay<Test>* p = packet_ray();
+                    return p && kd::test_packets<Test, AnyHit, 4>(m_packets, *p, leaf.primitive_offset(),
+                                                                  leaf.primitive_count(), closest, hit, from, to);
+                });
         });
     }
 
@@ -111,7 +122,8 @@ private:
 
     // The leaf's triangles ordered along a Morton curve over their centroids, so that each packet's cull
     // box is small. Ties keep the leaf's order: the layout is a function of the tree alone.
-    static std::vector<std::uint32_t> spatial_order(const TriangleMesh& mesh, std::span<const std::uint32_t> triangles) {
+    static std::vector<std::uint32_t> spatial_order(const TriangleMesh& mesh,
+                                                    std::span<const std::uint32_t> triangles) {
         std::vector<std::uint32_t> order(triangles.begin(), triangles.end());
         if (order.size() <= 1) return order;
         AABB centroids;

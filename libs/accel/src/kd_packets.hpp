@@ -8,6 +8,7 @@
 // packets of 8 are compiled for AVX2 in a function of their own, called once per leaf, and chosen at run
 // time on CPUs that have it (see kd_mesh.cpp).
 #include <rtlab/accel/accelerator.hpp>
+#include <rtlab/core/box_ray.hpp>
 #include <rtlab/geometry/triangle_intersect.hpp>
 #include <rtlab/geometry/triangle_mesh.hpp>
 
@@ -216,17 +217,19 @@ struct PacketRay<TriangleTest::watertight> {
     int near_row[3] = {0, 1, 2}, far_row[3] = {3, 4, 5};
     float near_origin[3] = {0, 0, 0}, far_origin[3] = {0, 0, 0}, inv[3] = {1, 1, 1};
 
-    explicit PacketRay(const Ray& r) : ray(r), tmin(r.tmin) {
+    explicit PacketRay(const Ray& r) : PacketRay(r, BoxRay(r)) {}
+    /// The same with the walk's slab data for the ray, whose inverse direction and signs the cull reuses.
+    [[gnu::always_inline]] PacketRay(const Ray& r, const BoxRay& box) : ray(r), tmin(r.tmin) {
         const Vec3& d = r.direction;
         ok = is_finite(r.origin) && is_finite(d) && (d.x != 0.0f || d.y != 0.0f || d.z != 0.0f);
         if (!ok) return;
         const float margin =
             kCullMargin * std::max(std::abs(r.origin.x), std::max(std::abs(r.origin.y), std::abs(r.origin.z)));
         for (int a = 0; a < 3; ++a) {
-            const bool negative = std::signbit(d[a]);
+            const bool negative = box.negative[a] != 0;
             near_row[a] = negative ? 3 + a : a;
             far_row[a] = negative ? a : 3 + a;
-            inv[a] = 1.0f / d[a];
+            inv[a] = box.inv[a];
             near_origin[a] = negative ? r.origin[a] - margin : r.origin[a] + margin;
             far_origin[a] = negative ? r.origin[a] + margin : r.origin[a] - margin;
         }
@@ -248,6 +251,7 @@ template <>
 struct PacketRay<TriangleTest::moller> {
     const Ray& ray;
     explicit PacketRay(const Ray& r) : ray(r) {}
+    PacketRay(const Ray& r, const BoxRay&) : ray(r) {}
     bool valid() const { return true; }
 };
 
@@ -255,6 +259,7 @@ template <>
 struct PacketRay<TriangleTest::plane> {
     const Ray& ray;
     explicit PacketRay(const Ray& r) : ray(r) {}
+    PacketRay(const Ray& r, const BoxRay&) : ray(r) {}
     bool valid() const { return true; }
 };
 
@@ -430,8 +435,8 @@ template <int W>
 /// skips packets whose cull box the ray meets only outside it.
 template <TriangleTest Test, bool AnyHit, int W>
 [[gnu::always_inline]] inline bool test_packets(const TrianglePackets& packets, const PacketRay<Test>& r,
-                                                std::uint32_t first, std::uint32_t count, float& closest,
-                                                MeshHit& hit, float from = -kInfinity, float to = kInfinity) {
+                                                std::uint32_t first, std::uint32_t count, float& closest, MeshHit& hit,
+                                                float from = -kInfinity, float to = kInfinity) {
     const std::size_t packet_floats = packets.packet_floats();
     const float* group = packets.group(first);
     bool any = false;

@@ -178,9 +178,14 @@ bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, floa
 /// 1 thread: 1-6% faster than one walk for all directions).
 template <bool AnyHit, class LeafTest>
 bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
+    return kd_traverse<AnyHit>(tree, ray, BoxRay(ray), test_leaf);
+}
+
+/// The same with the ray's slab data made by the caller (BoxRay(ray)), for leaf tests that use it too.
+template <bool AnyHit, class LeafTest>
+bool kd_traverse(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, LeafTest&& test_leaf) {
     if (tree.nodes.empty() || tree.bounds.is_empty() || !is_finite(ray.origin) || !is_finite(ray.direction))
         return false;
-    const BoxRay box_ray(ray);
     float tmin, tmax;
     if (!box_ray.clip(tree.bounds, ray.tmax, tmin, tmax)) return false;
     const unsigned octant = box_ray.negative[0] | box_ray.negative[1] << 1 | box_ray.negative[2] << 2;
