@@ -71,14 +71,6 @@ PhotonIntegrator::PhotonIntegrator(const SceneQuery& scene, const LightSet& ligh
     });
 }
 
-RGB PhotonIntegrator::radiance(const Ray& ray, const SampleKey& key, RayCounters& counters) const {
-    return estimate(ray, SampleStream(SampleSequence::independent, key), counters);
-}
-
-RGB PhotonIntegrator::sample_radiance(const CameraSample& sample, RayCounters& counters) const {
-    return estimate(sample.ray, sample.stream, counters);
-}
-
 // The reflected radiance at v from one map's photons that make paths of at most max_depth scattering events with
 // v at scattering index `bounce`; per photon shot.
 RGB PhotonIntegrator::density(const PhotonMap& map, const PathVertex& v, std::uint32_t bounce) const {

@@ -56,21 +56,13 @@ float pixel_angle(const Camera& camera) {
 
 /// The camera pass's radiance source: returns a sample's direct part and leaves its visible point in the pixel's
 /// slot (each pixel's samples run on one thread at a time, in order, so no two writers share a slot).
-class SppmCameraPass final : public RadianceSource {
+class SppmCameraPass final : public StreamRadianceSource {
 public:
     SppmCameraPass(const SceneQuery& scene, const LightSet& lights, const PathOptions& path, int width,
                    std::vector<VisiblePoint>& points)
         : m_scene(scene), m_lights(lights), m_path(path), m_width(width), m_points(points) {}
 
-    RGB radiance(const Ray& ray, const SampleKey& key, RayCounters& counters) const override {
-        return trace(ray, SampleStream(SampleSequence::independent, key), counters);
-    }
-    RGB sample_radiance(const CameraSample& sample, RayCounters& counters) const override {
-        return trace(sample.ray, sample.stream, counters);
-    }
-
-private:
-    RGB trace(const Ray& ray, const SampleStream& stream, RayStats& stats) const {
+    RGB estimate(const Ray& ray, const SampleStream& stream, RayStats& stats) const override {
         std::optional<GatherPoint> gp;
         RGB L = detail::walk_to_gather_point(m_scene, m_lights, m_path, detail::WalkStart{ray}, stream, stats, gp);
         if (!gp) return L;
@@ -90,6 +82,7 @@ private:
         return L;
     }
 
+private:
     const SceneQuery& m_scene;
     const LightSet& m_lights;
     const PathOptions& m_path;

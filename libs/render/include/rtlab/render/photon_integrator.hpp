@@ -63,7 +63,7 @@ struct PhotonOptions {
 void check_photon_options(const PhotonOptions& options);
 
 /// \brief The photon mapping integrator as the renderer's radiance source (see the file comment).
-class PhotonIntegrator final : public RadianceSource {
+class PhotonIntegrator final : public StreamRadianceSource {
 public:
     /// Shoots the photons (seed and threads as PhotonTraceSettings; a stop flag seen meanwhile leaves the maps
     /// empty: cancelled()) and builds the maps. scene and lights must outlive it. Throws rtlab::Error for bad
@@ -72,10 +72,7 @@ public:
                      PhotonOptions options, std::uint64_t seed = 0, int threads = 0,
                      const std::atomic<bool>* stop = nullptr);
 
-    RGB radiance(const Ray& ray, const SampleKey& key, RayCounters& counters) const override;
-    RGB sample_radiance(const CameraSample& sample, RayCounters& counters) const override;
-    /// One camera sample's estimate with its numbers from `stream`.
-    RGB estimate(const Ray& ray, const SampleStream& stream, RayStats& stats) const;
+    RGB estimate(const Ray& ray, const SampleStream& stream, RayStats& stats) const override;
 
     const PhotonMap& caustic_map() const { return m_caustic; }
     const PhotonMap& global_map() const { return m_global; }

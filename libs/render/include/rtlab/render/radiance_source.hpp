@@ -68,6 +68,21 @@ public:
     }
 };
 
+/// \brief A radiance source that draws every number of a sample from a SampleStream: the progressive renderer's
+/// camera samples bring theirs (low-discrepancy with PixelPattern::sobol), and radiance(ray, key) uses the
+/// independent stream of the key. An integrator implements estimate() alone.
+class StreamRadianceSource : public RadianceSource {
+public:
+    RGB radiance(const Ray& ray, const SampleKey& key, RayCounters& counters) const final {
+        return estimate(ray, SampleStream(SampleSequence::independent, key), counters);
+    }
+    RGB sample_radiance(const CameraSample& sample, RayCounters& counters) const final {
+        return estimate(sample.ray, sample.stream, counters);
+    }
+    /// One camera sample's radiance with its numbers from `stream`; adds the rays it traces to `stats`.
+    virtual RGB estimate(const Ray& ray, const SampleStream& stream, RayStats& stats) const = 0;
+};
+
 /// \brief A RadianceSource made of a callable.
 class FunctionRadiance final : public RadianceSource {
 public:

@@ -53,21 +53,15 @@ private:
 /// \brief The direct or path integrator as the renderer's radiance source: numbers from the camera sample's
 /// stream (low-discrepancy under the sobol pattern), or, for the other patterns, from an independent stream of the
 /// sample's key.
-class PathRadiance final : public RadianceSource {
+class PathRadiance final : public StreamRadianceSource {
 public:
     PathRadiance(const PathIntegrator& integrator, IntegratorKind kind) : m_integrator(integrator), m_kind(kind) {}
-    RGB radiance(const Ray& ray, const SampleKey& key, RayCounters& counters) const override {
-        return estimate(ray, SampleStream(SampleSequence::independent, key), counters);
-    }
-    RGB sample_radiance(const CameraSample& sample, RayCounters& counters) const override {
-        return estimate(sample.ray, sample.stream, counters);
+    RGB estimate(const Ray& ray, const SampleStream& stream, RayStats& stats) const override {
+        return m_kind == IntegratorKind::path ? m_integrator.path(ray, stream, stats)
+                                              : m_integrator.direct(ray, stream, stats);
     }
 
 private:
-    RGB estimate(const Ray& ray, const SampleStream& stream, RayCounters& counters) const {
-        return m_kind == IntegratorKind::path ? m_integrator.path(ray, stream, counters)
-                                              : m_integrator.direct(ray, stream, counters);
-    }
     const PathIntegrator& m_integrator;
     IntegratorKind m_kind;
 };
