@@ -15,6 +15,8 @@
 #include <rtlab/render/sppm.hpp>
 #include <rtlab/scene/scene_loader.hpp>
 
+#include <CLI/CLI.hpp>
+
 #include <sys/resource.h>
 
 #include <chrono>
@@ -52,33 +54,18 @@ int main(int argc, char** argv) {
     std::vector<fs::path> data_dirs;
     int width = 96, height = 72, ref_spp = 16384, max_spp = 1024, iterations = 512, threads = 2;
     std::uint32_t photons = 50000;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string flag = argv[i], value = argv[i + 1];
-        if (flag == "--width")
-            width = std::max(8, std::atoi(value.c_str()));
-        else if (flag == "--height")
-            height = std::max(8, std::atoi(value.c_str()));
-        else if (flag == "--ref-spp")
-            ref_spp = std::max(1, std::atoi(value.c_str()));
-        else if (flag == "--max-spp")
-            max_spp = std::max(4, std::atoi(value.c_str()));
-        else if (flag == "--iterations")
-            iterations = std::max(1, std::atoi(value.c_str()));
-        else if (flag == "--photons")
-            photons = static_cast<std::uint32_t>(std::max(1, std::atoi(value.c_str())));
-        else if (flag == "--threads")
-            threads = std::atoi(value.c_str());
-        else if (flag == "--csv")
-            csv = value;
-        else if (flag == "--reference")
-            reference_file = value;
-        else if (flag == "--data-dir")
-            data_dirs.emplace_back(value);
-        else {
-            std::fprintf(stderr, "caustics_rmse: unknown flag %s\n", flag.c_str());
-            return 2;
-        }
-    }
+    CLI::App app{"caustics_rmse: RMSE against time of path, photon and sppm on scenes/caustics.json"};
+    app.add_option("--width", width, "image width")->check(CLI::Range(8, 1 << 14));
+    app.add_option("--height", height, "image height")->check(CLI::Range(8, 1 << 14));
+    app.add_option("--ref-spp", ref_spp, "samples per pixel of the path-traced reference")->check(CLI::PositiveNumber);
+    app.add_option("--max-spp", max_spp, "path tracer's largest sample count")->check(CLI::Range(4, 1 << 24));
+    app.add_option("--iterations", iterations, "sppm's largest iteration count")->check(CLI::PositiveNumber);
+    app.add_option("--photons", photons, "photons per map or per sppm iteration")->check(CLI::PositiveNumber);
+    app.add_option("--threads", threads, "render threads (0: every core)")->check(CLI::NonNegativeNumber);
+    app.add_option("--csv", csv, "write the results as CSV");
+    app.add_option("--reference", reference_file, "reference image: read if it exists, else rendered and written");
+    app.add_option("--data-dir", data_dirs, "data directory (repeatable)");
+    CLI11_PARSE(app, argc, argv);
     SceneLoadOptions load;
     load.data_path = DataPath::from_environment(data_dirs, fs::path(argv[0]));
     load.overrides.width = width;

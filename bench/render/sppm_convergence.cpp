@@ -14,6 +14,8 @@
 #include <rtlab/render/sppm.hpp>
 #include <rtlab/scene/scene_loader.hpp>
 
+#include <CLI/CLI.hpp>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -29,29 +31,16 @@ int main(int argc, char** argv) {
     std::string csv, reference_file;
     int size = 32, ref_spp = 16384, iterations = 1024, threads = 0;
     std::uint32_t photons = 20000;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string flag = argv[i], value = argv[i + 1];
-        if (flag == "--scene")
-            scene_file = value;
-        else if (flag == "--size")
-            size = std::max(8, std::atoi(value.c_str()));
-        else if (flag == "--ref-spp")
-            ref_spp = std::max(1, std::atoi(value.c_str()));
-        else if (flag == "--iterations")
-            iterations = std::max(1, std::atoi(value.c_str()));
-        else if (flag == "--photons")
-            photons = static_cast<std::uint32_t>(std::max(1, std::atoi(value.c_str())));
-        else if (flag == "--threads")
-            threads = std::atoi(value.c_str());
-        else if (flag == "--csv")
-            csv = value;
-        else if (flag == "--reference")
-            reference_file = value;
-        else {
-            std::fprintf(stderr, "sppm_convergence: unknown flag %s\n", flag.c_str());
-            return 2;
-        }
-    }
+    CLI::App app{"sppm_convergence: sppm against a path-traced reference by iteration count, 8x8 block means"};
+    app.add_option("--scene", scene_file, "scene file (default: scenes/cornell_box.json)");
+    app.add_option("--size", size, "image width and height")->check(CLI::Range(8, 1 << 14));
+    app.add_option("--ref-spp", ref_spp, "samples per pixel of the path-traced reference")->check(CLI::PositiveNumber);
+    app.add_option("--iterations", iterations, "largest iteration count")->check(CLI::PositiveNumber);
+    app.add_option("--photons", photons, "photons per iteration")->check(CLI::PositiveNumber);
+    app.add_option("--threads", threads, "render threads (0: every core)")->check(CLI::NonNegativeNumber);
+    app.add_option("--csv", csv, "write the results as CSV");
+    app.add_option("--reference", reference_file, "reference image: read if it exists, else rendered and written");
+    CLI11_PARSE(app, argc, argv);
     SceneLoadOptions load;
     load.use_environment = false;
     load.overrides.width = load.overrides.height = size;
