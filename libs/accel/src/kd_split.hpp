@@ -38,16 +38,6 @@ public:
         d[axis] = m_box.hi[axis] - position;
         p_right = area(d) * m_inv;
     }
-    /// The same for an axis known at compile time: the other two extents' product is then hoisted out of
-    /// a sweep (the same product, so the same bits).
-    template <int Axis>
-    void at(float position, float& p_left, float& p_right) const {
-        Vec3 d = m_extent;
-        d[Axis] = position - m_box.lo[Axis];
-        p_left = area(d) * m_inv;
-        d[Axis] = m_box.hi[Axis] - position;
-        p_right = area(d) * m_inv;
-    }
 
 private:
     static float area(const Vec3& d) { return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x); }
