@@ -7,6 +7,7 @@
 #include "kd_split.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
@@ -34,6 +35,8 @@ struct BuildNode {
 using NodeArena = tbb::enumerable_thread_specific<std::deque<BuildNode>>;
 
 constexpr std::size_t kParallelThreshold = 4096;
+/// Events (of the three axes) of a node large enough for its own work to be split between threads.
+constexpr std::size_t kParallelEvents = 3 * 32768;
 constexpr std::size_t kNaiveWarnSize = 20000;
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
@@ -98,14 +101,7 @@ struct SahStrategy {
     using State = std::array<std::vector<kd::Event>, 3>;
     const KdCostModel& cost;
 
-    State root_state(const std::vector<kd::Prim>& prims) const {
-        State events;
-        for (auto& e : events) e.reserve(2 * prims.size());
-        for (std::size_t i = 0; i < prims.size(); ++i)
-            kd::add_events(prims[i].box, static_cast<std::uint32_t>(i), events);
-        kd::sort_events(events);
-        return events;
-    }
+    State root_state(const std::vector<kd::Prim>& prims) const { return kd::root_events(prims); }
     kd::Split choose(const std::vector<kd::Prim>& prims, const State& events, const AABB& box, int) const {
         return kd::sweep_sah(events, prims.size(), box, cost);
     }
@@ -126,14 +122,22 @@ struct SahStrategy {
         kd::sort_events(below_new);
         kd::sort_events(above_new);
         State below_events, above_events;
-        for (int axis = 0; axis < 3; ++axis) {
+        auto filter = [&](std::size_t axis) {
             // Sized for the most events the sides can get (left uninitialized), cut to size after.
             below_events[axis].resize(2 * (part.below.size() - part.below_clipped.size()) + below_new[axis].size());
             above_events[axis].resize(2 * (part.above.size() - part.above_clipped.size()) + above_new[axis].size());
             filter_and_merge(events[axis], part.moved.data(), below_new[axis], above_new[axis], below_events[axis],
                              above_events[axis]);
             std::vector<kd::Event>().swap(events[axis]);
-        }
+        };
+        // A large node's axes in parallel (the root's cut and the few nodes below it, before the build has
+        // forked enough to keep every thread busy). Isolated: this thread's scratch lists are in use until
+        // the filters end, so it must not take up another node's work while it waits for them.
+        if (events[0].size() + events[1].size() + events[2].size() >= kParallelEvents)
+            tbb::this_task_arena::isolate(
+                [&] { tbb::parallel_invoke([&] { filter(0); }, [&] { filter(1); }, [&] { filter(2); }); });
+        else
+            for (std::size_t axis = 0; axis < 3; ++axis) filter(axis);
         return {std::move(below_events), std::move(above_events)};
     }
 };

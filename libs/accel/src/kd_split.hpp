@@ -78,6 +78,8 @@ struct Event {
 /// Appends the events of one primitive box to the three axes' lists.
 void add_events(const AABB& box, std::uint32_t slot, std::array<std::vector<Event>, 3>& events);
 void sort_events(std::array<std::vector<Event>, 3>& events);
+/// The root's events of every primitive (slot = index in prims), sorted; the axes in parallel.
+std::array<std::vector<Event>, 3> root_events(std::span<const Prim> prims);
 /// The best SAH split from sorted events of n primitives; a leaf (axis < 0) when none beats it.
 Split sweep_sah(const std::array<std::vector<Event>, 3>& events, std::size_t n, const AABB& box,
                 const KdCostModel& cost);
