@@ -88,21 +88,23 @@ public:
     std::uint32_t packets_for(std::uint32_t count) const {
         return (count + static_cast<std::uint32_t>(m_width) - 1) / static_cast<std::uint32_t>(m_width);
     }
-    /// Appends a leaf's triangles (mesh indices); returns the index of its first packet.
-    std::uint32_t add_leaf(const TriangleMesh& mesh, std::span<const std::uint32_t> triangles) {
+    /// Room for `packets` packets, to be filled by fill_leaf (sized once: growing packet by packet moved
+    /// the whole array again and again).
+    void allocate(std::size_t packets) { m_data.assign(packets * packet_floats(), 0.0f); }
+    /// Writes a leaf's triangles (mesh indices) into packets_for(size) packets from packet `first`. Leaves
+    /// in packets of their own may be filled from several threads at once.
+    void fill_leaf(const TriangleMesh& mesh, std::span<const std::uint32_t> triangles, std::uint32_t first) {
         const std::size_t block = packet_floats();
-        const auto first = static_cast<std::uint32_t>(m_data.size() / block);
-        for (std::size_t k = 0; k < triangles.size(); k += static_cast<std::size_t>(m_width)) {
-            const std::size_t base = m_data.size();
-            m_data.resize(base + block);
+        std::size_t base = static_cast<std::size_t>(first) * block;
+        for (std::size_t k = 0; k < triangles.size(); k += static_cast<std::size_t>(m_width), base += block) {
             for (std::size_t lane = 0; lane < static_cast<std::size_t>(m_width); ++lane) {
                 const std::uint32_t i = triangles[std::min(k + lane, triangles.size() - 1)];
                 fill_lane(mesh, i, &m_data[base], lane);
                 std::memcpy(&m_data[base + static_cast<std::size_t>(m_width * (m_rows - 1)) + lane], &i, sizeof(i));
             }
         }
-        return first;
     }
+
     std::size_t bytes() const { return m_data.size() * sizeof(float); }
     const float* packet(std::uint32_t k) const { return m_data.data() + static_cast<std::size_t>(k) * packet_floats(); }
     /// The mesh's triangle in a lane of packet p (a pointer from packet()).
@@ -111,7 +113,6 @@ public:
         std::memcpy(&i, p + m_width * (m_rows - 1) + lane, sizeof(i));
         return i;
     }
-    void shrink() { m_data.shrink_to_fit(); }
 
 private:
     std::size_t packet_floats() const { return static_cast<std::size_t>(m_rows) * static_cast<std::size_t>(m_width); }
