@@ -111,16 +111,8 @@ struct SahStrategy {
         Scratch& scratch = thread_scratch();
         State& below_new = scratch.below_new;
         State& above_new = scratch.above_new;
-        for (int axis = 0; axis < 3; ++axis) {
-            below_new[axis].clear();
-            above_new[axis].clear();
-            below_new[axis].reserve(2 * part.below_clipped.size());
-            above_new[axis].reserve(2 * part.above_clipped.size());
-        }
-        for (std::uint32_t slot : part.below_clipped) kd::add_events(part.below[slot].box, slot, below_new);
-        for (std::uint32_t slot : part.above_clipped) kd::add_events(part.above[slot].box, slot, above_new);
-        kd::sort_events(below_new);
-        kd::sort_events(above_new);
+        kd::sorted_events(part.below, part.below_clipped, below_new);
+        kd::sorted_events(part.above, part.above_clipped, above_new);
         State below_events, above_events;
         auto filter = [&](std::size_t axis) {
             // Sized for the most events the sides can get (left uninitialized), cut to size after.

@@ -75,9 +75,10 @@ struct Event {
         return position < o.position || (position == o.position && (key >> 30) < (o.key >> 30));
     }
 };
-/// Appends the events of one primitive box to the three axes' lists.
-void add_events(const AABB& box, std::uint32_t slot, std::array<std::vector<Event>, 3>& events);
-void sort_events(std::array<std::vector<Event>, 3>& events);
+/// The events of the primitives at `slots` of `prims` (the clipped ones of a node's side), sorted, into
+/// `events` (replacing what they held).
+void sorted_events(std::span<const Prim> prims, std::span<const std::uint32_t> slots,
+                   std::array<std::vector<Event>, 3>& events);
 /// The root's events of every primitive (slot = index in prims), sorted; the axes in parallel.
 std::array<std::vector<Event>, 3> root_events(std::span<const Prim> prims);
 /// The best SAH split from sorted events of n primitives; a leaf (axis < 0) when none beats it.

@@ -18,17 +18,6 @@
 
 namespace rtlab::kd {
 
-void add_events(const AABB& box, std::uint32_t slot, std::array<std::vector<Event>, 3>& events) {
-    for (int axis = 0; axis < 3; ++axis) {
-        if (box.lo[axis] == box.hi[axis]) {
-            events[axis].push_back({box.lo[axis], kPlanar, slot});
-        } else {
-            events[axis].push_back({box.lo[axis], kStart, slot});
-            events[axis].push_back({box.hi[axis], kEnd, slot});
-        }
-    }
-}
-
 namespace {
 
 // An event's order as one integer: the position's bits made monotone (with -0 taken as +0, which compares
@@ -39,39 +28,53 @@ std::uint64_t sort_key(const Event& e) {
     return static_cast<std::uint64_t>(ordered) << 2 | e.type();
 }
 
-// Least-significant-digit radix sort on sort_key's 34 bits, three passes of 12, 11 and 11 bits: linear
-// where std::sort's n log n comparisons dominate the root's sort (all primitives' events).
-void radix_sort(std::vector<Event>& events) {
+// The event a key (sort_key over the slot) stands for. The key keeps the position up to the sign of zero:
+// a zero is read back from the box.
+Event decode(std::uint64_t key, std::span<const Prim> prims, int axis) {
+    const auto slot = static_cast<std::uint32_t>(key & Event::kSlotMask);
+    const auto type = static_cast<EventType>(key >> 30 & 3u);
+    const auto ordered = static_cast<std::uint32_t>(key >> 32);
+    auto position = std::bit_cast<float>((ordered & 0x80000000u) != 0 ? ordered & 0x7FFFFFFFu : ~ordered);
+    if (position == 0.0f) position = type == kEnd ? prims[slot].box.hi[axis] : prims[slot].box.lo[axis];
+    return {position, type, slot};
+}
+
+// The root's events of one axis, sorted: as keys (sort_key over the slot, 8 bytes) by a least-significant-
+// digit radix sort on their top 34 bits, three passes of 12, 11 and 11 bits -- linear where std::sort's
+// n log n comparisons dominate -- then decoded. The sort is stable: equal events keep the boxes' order.
+void radix_sort_root(std::span<const Prim> prims, int axis, std::vector<Event>& events) {
     constexpr int kPasses = 3;
-    constexpr int kShift[kPasses] = {0, 12, 23};
+    constexpr int kShift[kPasses] = {30, 42, 53};
     constexpr std::uint32_t kMask[kPasses] = {(1u << 12) - 1, (1u << 11) - 1, (1u << 11) - 1};
-    const std::size_t n = events.size();
-    // Left uninitialized (the events' default constructor writes nothing): each pass writes them all.
-    const std::unique_ptr<std::uint64_t[]> keys(new std::uint64_t[n]), keys_tmp(new std::uint64_t[n]);
-    std::vector<Event> tmp(n);
+    std::vector<std::uint64_t> keys;
+    keys.reserve(2 * prims.size());
+    for (std::size_t i = 0; i < prims.size(); ++i) {
+        const float lo = prims[i].box.lo[axis], hi = prims[i].box.hi[axis];
+        const auto slot = static_cast<std::uint32_t>(i);
+        if (lo == hi) {
+            keys.push_back(sort_key(Event(lo, kPlanar, slot)) << 30 | slot);
+        } else {
+            keys.push_back(sort_key(Event(lo, kStart, slot)) << 30 | slot);
+            keys.push_back(sort_key(Event(hi, kEnd, slot)) << 30 | slot);
+        }
+    }
+    const std::size_t n = keys.size();
     std::vector<std::size_t> count[kPasses];
     for (int p = 0; p < kPasses; ++p) count[p].assign(kMask[p] + 2, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        keys[i] = sort_key(events[i]);
-        for (int p = 0; p < kPasses; ++p) ++count[p][((keys[i] >> kShift[p]) & kMask[p]) + 1];
-    }
-    Event* from = events.data();
-    Event* to = tmp.data();
-    std::uint64_t* from_keys = keys.get();
-    std::uint64_t* to_keys = keys_tmp.get();
+    for (const std::uint64_t key : keys)
+        for (int p = 0; p < kPasses; ++p) ++count[p][((key >> kShift[p]) & kMask[p]) + 1];
+    // Left uninitialized: each pass writes it all.
+    const std::unique_ptr<std::uint64_t[]> tmp(new std::uint64_t[n]);
+    std::uint64_t* from = keys.data();
+    std::uint64_t* to = tmp.get();
     for (int p = 0; p < kPasses; ++p) {
         std::vector<std::size_t>& offset = count[p];
         for (std::size_t b = 1; b < offset.size(); ++b) offset[b] += offset[b - 1];
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t slot = offset[(from_keys[i] >> kShift[p]) & kMask[p]]++;
-            to[slot] = from[i];
-            to_keys[slot] = from_keys[i];
-        }
+        for (std::size_t i = 0; i < n; ++i) to[offset[(from[i] >> kShift[p]) & kMask[p]]++] = from[i];
         std::swap(from, to);
-        std::swap(from_keys, to_keys);
     }
-    // An odd number of passes leaves the result in tmp.
-    if (from != events.data()) events.swap(tmp);
+    events.resize(n);
+    for (std::size_t i = 0; i < n; ++i) events[i] = decode(from[i], prims, axis);
 }
 
 }  // namespace
@@ -81,14 +84,8 @@ namespace {
 // Below a few thousand events the radix sort's buckets cost more than the comparisons they save.
 constexpr std::size_t kRadixMin = 4096;
 
-void sort_axis(std::vector<Event>& e) {
-    if (e.size() >= kRadixMin)
-        radix_sort(e);
-    else
-        std::sort(e.begin(), e.end());
-}
-
-// One axis's events of the boxes, in the order add_events appends them.
+// One axis's events of the boxes, in the boxes' order, start before end (the order of equal events after
+// the stable radix sort).
 void add_axis_events(std::span<const Prim> prims, int axis, std::vector<Event>& events) {
     events.reserve(2 * prims.size());
     for (std::size_t i = 0; i < prims.size(); ++i) {
@@ -105,8 +102,34 @@ void add_axis_events(std::span<const Prim> prims, int axis, std::vector<Event>& 
 
 }  // namespace
 
-void sort_events(std::array<std::vector<Event>, 3>& events) {
-    for (auto& e : events) sort_axis(e);
+void sorted_events(std::span<const Prim> prims, std::span<const std::uint32_t> slots,
+                   std::array<std::vector<Event>, 3>& events) {
+    // Sorted as single integers -- sort_key over the slot -- which compare in one instruction where events
+    // compare position, then type, with branches. A key keeps the position only up to the sign of zero, so
+    // the position is read back from the box. Equal events come out by slot (std::sort of the events left
+    // their order unspecified; it matters to nothing).
+    thread_local std::vector<std::uint64_t> keys;
+    for (int axis = 0; axis < 3; ++axis) {
+        keys.clear();
+        for (const std::uint32_t slot : slots) {
+            const float lo = prims[slot].box.lo[axis], hi = prims[slot].box.hi[axis];
+            if (lo == hi) {
+                keys.push_back(sort_key(Event(lo, kPlanar, slot)) << 30 | slot);
+            } else {
+                keys.push_back(sort_key(Event(lo, kStart, slot)) << 30 | slot);
+                keys.push_back(sort_key(Event(hi, kEnd, slot)) << 30 | slot);
+            }
+        }
+        std::sort(keys.begin(), keys.end());
+        std::vector<Event>& out = events[static_cast<std::size_t>(axis)];
+        out.resize(keys.size());
+        for (std::size_t k = 0; k < keys.size(); ++k) {
+            const auto slot = static_cast<std::uint32_t>(keys[k] & Event::kSlotMask);
+            const auto type = static_cast<EventType>(keys[k] >> 30 & 3u);
+            const AABB& box = prims[slot].box;
+            out[k] = Event(type == kEnd ? box.hi[axis] : box.lo[axis], type, slot);
+        }
+    }
 }
 
 std::array<std::vector<Event>, 3> root_events(std::span<const Prim> prims) {
@@ -114,8 +137,15 @@ std::array<std::vector<Event>, 3> root_events(std::span<const Prim> prims) {
     // parallel work there.
     std::array<std::vector<Event>, 3> events;
     auto axis = [&](int a) {
-        add_axis_events(prims, a, events[static_cast<std::size_t>(a)]);
-        sort_axis(events[static_cast<std::size_t>(a)]);
+        std::vector<Event>& e = events[static_cast<std::size_t>(a)];
+        std::size_t count = 0;
+        for (const Prim& p : prims) count += p.box.lo[a] == p.box.hi[a] ? 1 : 2;
+        if (count >= kRadixMin) {
+            radix_sort_root(prims, a, e);
+        } else {
+            add_axis_events(prims, a, e);
+            std::sort(e.begin(), e.end());
+        }
     };
     if (prims.size() >= kRadixMin)
         tbb::parallel_invoke([&] { axis(0); }, [&] { axis(1); }, [&] { axis(2); });
