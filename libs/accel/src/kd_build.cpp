@@ -240,16 +240,26 @@ private:
             if (planar || lo >= s.position) return kAboveSide;
             return kBoth;
         };
-        // Counted first, so that each list is allocated once at its final size.
-        std::size_t counts[3] = {0, 0, 0};
-        for (const kd::Prim& p : prims) ++counts[side(p)];
+        // Counted first, so that each list is allocated once at its final size -- by the split finder
+        // when it did (the SAH sweep: the pass over the primitives, streaming them from memory in a large
+        // node, would cost about as much as the partition's own).
+        std::size_t below = 0, above = 0;
+        if (s.below >= 0 && s.above >= 0) {
+            below = static_cast<std::size_t>(s.below);
+            above = static_cast<std::size_t>(s.above);
+        } else {
+            std::size_t counts[3] = {0, 0, 0};
+            for (const kd::Prim& p : prims) ++counts[side(p)];
+            below = counts[kBelow] + counts[kBoth];
+            above = counts[kAboveSide] + counts[kBoth];
+        }
         Scratch& scratch = thread_scratch();
         scratch.moved.resize(prims.size());
         scratch.below_clipped.clear();
         scratch.above_clipped.clear();
         Partition part{{}, {}, scratch.moved, scratch.below_clipped, scratch.above_clipped};
-        part.below.reserve(counts[kBelow] + counts[kBoth]);
-        part.above.reserve(counts[kAboveSide] + counts[kBoth]);
+        part.below.reserve(below);
+        part.above.reserve(above);
         auto add = [](std::vector<kd::Prim>& list, const kd::Prim& p) {
             list.push_back(p);
             return static_cast<std::uint32_t>(list.size() - 1);

@@ -22,6 +22,9 @@ struct Split {
     float position = 0.0f;
     bool planar_left = true;  ///< where primitives lying in the split plane go
     float cost = 0.0f;
+    /// Primitives going below and above (straddlers counted on both sides) when the finder counted them
+    /// (the SAH sweep does), else -1.
+    std::int64_t below = -1, above = -1;
 };
 
 /// \brief Surface-area ratios of the two halves of a box split on one axis, for many planes: the box's

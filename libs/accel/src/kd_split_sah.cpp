@@ -321,10 +321,21 @@ void cost_candidates(const AABB& box, const KdCostModel& cost, Candidates& c) {
 void pick(int axis, const Candidates& c, Split& best) {
     const float* cost_left = c.cost_left.get();
     const float* cost_right = c.cost_right.get();
+    std::size_t chosen = c.size;
     for (std::size_t k = 0; k < c.size; ++k) {
-        if (cost_left[k] < best.cost) best = {axis, c.position[k], true, cost_left[k]};
-        if (cost_right[k] < best.cost) best = {axis, c.position[k], false, cost_right[k]};
+        if (cost_left[k] < best.cost) {
+            best = {axis, c.position[k], true, cost_left[k]};
+            chosen = k;
+        }
+        if (cost_right[k] < best.cost) {
+            best = {axis, c.position[k], false, cost_right[k]};
+            chosen = k;
+        }
     }
+    if (chosen == c.size) return;
+    // The counts the partition will find (it sorts the primitives by the very tests the events encode).
+    best.below = c.n_left[chosen] + (best.planar_left ? c.planar[chosen] : 0);
+    best.above = c.n_right[chosen] + (best.planar_left ? 0 : c.planar[chosen]);
 }
 
 template <int Axis>
