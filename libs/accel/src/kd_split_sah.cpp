@@ -321,18 +321,27 @@ void cost_candidates(const AABB& box, const KdCostModel& cost, Candidates& c) {
 void pick(int axis, const Candidates& c, Split& best) {
     const float* cost_left = c.cost_left.get();
     const float* cost_right = c.cost_right.get();
-    std::size_t chosen = c.size;
-    for (std::size_t k = 0; k < c.size; ++k) {
-        if (cost_left[k] < best.cost) {
-            best = {axis, c.position[k], true, cost_left[k]};
-            chosen = k;
-        }
-        if (cost_right[k] < best.cost) {
-            best = {axis, c.position[k], false, cost_right[k]};
-            chosen = k;
-        }
-    }
-    if (chosen == c.size) return;
+    // The least cost first, four candidates at a time (costs are finite and positive, so the vector
+    // minimum is the scalar one), then, only when it beats the best so far, its first candidate: the one
+    // one candidate after the other with `<` finds.
+    float least = best.cost;
+    std::size_t k = 0;
+#if defined(__SSE2__)
+    __m128 least4 = _mm_set1_ps(least);
+    for (; k + 4 <= c.size; k += 4)
+        least4 = _mm_min_ps(least4, _mm_min_ps(_mm_loadu_ps(cost_left + k), _mm_loadu_ps(cost_right + k)));
+    alignas(16) float lanes[4];
+    _mm_store_ps(lanes, least4);
+    least = std::min(std::min(lanes[0], lanes[1]), std::min(lanes[2], lanes[3]));
+#endif
+    for (; k < c.size; ++k) least = std::min(least, std::min(cost_left[k], cost_right[k]));
+    if (!(least < best.cost)) return;
+    std::size_t chosen = 0;
+    while (cost_left[chosen] != least && cost_right[chosen] != least) ++chosen;
+    if (cost_left[chosen] == least)
+        best = {axis, c.position[chosen], true, least};
+    else
+        best = {axis, c.position[chosen], false, least};
     // The counts the partition will find (it sorts the primitives by the very tests the events encode).
     best.below = c.n_left[chosen] + (best.planar_left ? c.planar[chosen] : 0);
     best.above = c.n_right[chosen] + (best.planar_left ? 0 : c.planar[chosen]);
