@@ -52,7 +52,7 @@ Report::Report(const std::string& csv_path, RunInfo info) : m_info(std::move(inf
         m_csv->print(
             "method,mesh,triangles,threads,build_s,nodes,leaves,empty_leaves,max_depth,mean_leaf_prims,bytes,"
             "sah_cost,ray_set,rays,closest_mrays_s,anyhit_mrays_s,mismatches,triangle_test,reference,"
-            "bytes_per_triangle,leaf_width\n");
+            "bytes_per_triangle,leaf_width,build_peak_bytes\n");
     }
     print_table_header();
 }
@@ -61,11 +61,12 @@ void Report::add(const Score& s, const std::string& ray_set, const std::string& 
     print_table_row(s, ray_set);
     if (!m_csv) return;
     const AccelStats& st = s.stats;
-    m_csv->print("{},{},{},{},{:.6g},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{},{},{},{},{}\n", s.method,
+    m_csv->print("{},{},{},{},{:.6g},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{},{},{},{},{},{}\n", s.method,
                  m_info.mesh_name, m_info.triangles, m_info.threads, s.build_s, field(st.nodes), field(st.leaves),
                  field(st.empty_leaves), field(st.max_depth), field(st.mean_leaf_primitives), field(st.bytes),
                  field(st.sah_cost), ray_set, s.rays, s.closest_mrays, s.any_mrays, field(s.mismatches),
-                 m_info.triangle_test, reference, field(s.bytes_per_triangle, "{:.2f}"), field(st.leaf_width));
+                 m_info.triangle_test, reference, field(s.bytes_per_triangle, "{:.2f}"), field(st.leaf_width),
+                 field(st.build_peak_bytes));
 }
 
 }  // namespace rtlab::accel_app

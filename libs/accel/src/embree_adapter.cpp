@@ -8,6 +8,8 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -17,12 +19,33 @@ namespace rtlab::accel {
 
 namespace {
 
+/// \brief The bytes an Embree device holds, as its memory monitor reports them: Embree calls it for the
+/// blocks it allocates and frees itself (geometry buffers it owns, the build's primitive arrays, the tree's
+/// node and leaf blocks -- whole blocks, so a partly used one counts in full), not for small objects or the
+/// thread pool. Called from Embree's build threads, hence atomics.
+struct EmbreeMemoryCount {
+    std::atomic<std::int64_t> current{0};
+    std::atomic<std::int64_t> peak{0};
+
+    static bool monitor(void* self, ssize_t bytes, bool post) {
+        // Allocations are reported before they happen (post = false), frees after (post = true); each once.
+        auto& count = *static_cast<EmbreeMemoryCount*>(self);
+        const std::int64_t now = count.current.fetch_add(bytes) + bytes;
+        std::int64_t peak = count.peak.load();
+        while (now > peak && !count.peak.compare_exchange_weak(peak, now)) {
+        }
+        static_cast<void>(post);
+        return true;  // never refuse
+    }
+};
+
 class EmbreeAccelerator final : public TriangleAccelerator {
 public:
     EmbreeAccelerator(const TriangleMesh& mesh, const BuildOptions& options) {
         const std::string config = options.threads > 0 ? "threads=" + std::to_string(options.threads) : "";
         m_device = rtcNewDevice(config.empty() ? nullptr : config.c_str());
         if (!m_device) throw Error("embree: cannot create a device");
+        rtcSetDeviceMemoryMonitorFunction(m_device, &EmbreeMemoryCount::monitor, &m_memory);
         const auto start = std::chrono::steady_clock::now();
         m_scene = rtcNewScene(m_device);
         rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
@@ -38,8 +61,15 @@ public:
         rtcCommitGeometry(geometry);
         rtcAttachGeometry(m_scene, geometry);
         rtcReleaseGeometry(geometry);
+        // The tree's bytes: what the scene's build allocated net of what it freed, not the vertex and index
+        // buffers above (the mesh's own data, which the kd-trees' bytes leave out too). The peak is the
+        // most the build held at once beyond those buffers (its temporary primitive arrays included).
+        const std::int64_t before = m_memory.current.load();
+        m_memory.peak = before;
         rtcCommitScene(m_scene);
         m_stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        m_stats.bytes = m_memory.current.load() - before;
+        m_stats.build_peak_bytes = m_memory.peak.load() - before;
     }
     ~EmbreeAccelerator() override {
         if (m_scene) rtcReleaseScene(m_scene);
@@ -101,6 +131,7 @@ private:
         r.flags = 0;
     }
 
+    EmbreeMemoryCount m_memory;  // before the device, which reports to it until released
     RTCDevice m_device = nullptr;
     RTCScene m_scene = nullptr;
     AccelStats m_stats;

@@ -7,6 +7,7 @@
 #include "kd_split.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
@@ -34,6 +35,8 @@ struct BuildNode {
 using NodeArena = tbb::enumerable_thread_specific<std::deque<BuildNode>>;
 
 constexpr std::size_t kParallelThreshold = 4096;
+/// Events (of the three axes) of a node large enough for its own work to be split between threads.
+constexpr std::size_t kParallelEvents = 3 * 32768;
 constexpr std::size_t kNaiveWarnSize = 20000;
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
@@ -98,14 +101,7 @@ struct SahStrategy {
     using State = std::array<std::vector<kd::Event>, 3>;
     const KdCostModel& cost;
 
-    State root_state(const std::vector<kd::Prim>& prims) const {
-        State events;
-        for (auto& e : events) e.reserve(2 * prims.size());
-        for (std::size_t i = 0; i < prims.size(); ++i)
-            kd::add_events(prims[i].box, static_cast<std::uint32_t>(i), events);
-        kd::sort_events(events);
-        return events;
-    }
+    State root_state(const std::vector<kd::Prim>& prims) const { return kd::root_events(prims); }
     kd::Split choose(const std::vector<kd::Prim>& prims, const State& events, const AABB& box, int) const {
         return kd::sweep_sah(events, prims.size(), box, cost);
     }
@@ -115,25 +111,25 @@ struct SahStrategy {
         Scratch& scratch = thread_scratch();
         State& below_new = scratch.below_new;
         State& above_new = scratch.above_new;
-        for (int axis = 0; axis < 3; ++axis) {
-            below_new[axis].clear();
-            above_new[axis].clear();
-            below_new[axis].reserve(2 * part.below_clipped.size());
-            above_new[axis].reserve(2 * part.above_clipped.size());
-        }
-        for (std::uint32_t slot : part.below_clipped) kd::add_events(part.below[slot].box, slot, below_new);
-        for (std::uint32_t slot : part.above_clipped) kd::add_events(part.above[slot].box, slot, above_new);
-        kd::sort_events(below_new);
-        kd::sort_events(above_new);
+        kd::sorted_events(part.below, part.below_clipped, below_new);
+        kd::sorted_events(part.above, part.above_clipped, above_new);
         State below_events, above_events;
-        for (int axis = 0; axis < 3; ++axis) {
+        auto filter = [&](std::size_t axis) {
             // Sized for the most events the sides can get (left uninitialized), cut to size after.
             below_events[axis].resize(2 * (part.below.size() - part.below_clipped.size()) + below_new[axis].size());
             above_events[axis].resize(2 * (part.above.size() - part.above_clipped.size()) + above_new[axis].size());
             filter_and_merge(events[axis], part.moved.data(), below_new[axis], above_new[axis], below_events[axis],
                              above_events[axis]);
             std::vector<kd::Event>().swap(events[axis]);
-        }
+        };
+        // A large node's axes in parallel (the root's cut and the few nodes below it, before the build has
+        // forked enough to keep every thread busy). Isolated: this thread's scratch lists are in use until
+        // the filters end, so it must not take up another node's work while it waits for them.
+        if (events[0].size() + events[1].size() + events[2].size() >= kParallelEvents)
+            tbb::this_task_arena::isolate(
+                [&] { tbb::parallel_invoke([&] { filter(0); }, [&] { filter(1); }, [&] { filter(2); }); });
+        else
+            for (std::size_t axis = 0; axis < 3; ++axis) filter(axis);
         return {std::move(below_events), std::move(above_events)};
     }
 };
@@ -244,16 +240,26 @@ private:
             if (planar || lo >= s.position) return kAboveSide;
             return kBoth;
         };
-        // Counted first, so that each list is allocated once at its final size.
-        std::size_t counts[3] = {0, 0, 0};
-        for (const kd::Prim& p : prims) ++counts[side(p)];
+        // Counted first, so that each list is allocated once at its final size -- by the split finder
+        // when it did (the SAH sweep: the pass over the primitives, streaming them from memory in a large
+        // node, would cost about as much as the partition's own).
+        std::size_t below = 0, above = 0;
+        if (s.below >= 0 && s.above >= 0) {
+            below = static_cast<std::size_t>(s.below);
+            above = static_cast<std::size_t>(s.above);
+        } else {
+            std::size_t counts[3] = {0, 0, 0};
+            for (const kd::Prim& p : prims) ++counts[side(p)];
+            below = counts[kBelow] + counts[kBoth];
+            above = counts[kAboveSide] + counts[kBoth];
+        }
         Scratch& scratch = thread_scratch();
         scratch.moved.resize(prims.size());
         scratch.below_clipped.clear();
         scratch.above_clipped.clear();
         Partition part{{}, {}, scratch.moved, scratch.below_clipped, scratch.above_clipped};
-        part.below.reserve(counts[kBelow] + counts[kBoth]);
-        part.above.reserve(counts[kAboveSide] + counts[kBoth]);
+        part.below.reserve(below);
+        part.above.reserve(above);
         auto add = [](std::vector<kd::Prim>& list, const kd::Prim& p) {
             list.push_back(p);
             return static_cast<std::uint32_t>(list.size() - 1);

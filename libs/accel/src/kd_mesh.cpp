@@ -6,6 +6,10 @@
 #include "kd_packets.hpp"
 #include "mesh_triangles.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <optional>
 #include <span>
@@ -41,7 +45,7 @@ public:
         : m_name(kd_strategy_name(strategy)),
           m_tree(build(strategy, mesh, options, cost)),
           m_packets(options.triangle_test, leaf_width(options.leaf_width)) {
-        lay_out_leaves(mesh);
+        lay_out_leaves(mesh, options.threads);
         m_tree.stats.bytes = static_cast<std::int64_t>(m_tree.nodes.size() * sizeof(KdNode) + m_packets.bytes());
         m_tree.stats.leaf_width = m_packets.width();
     }
@@ -93,31 +97,61 @@ private:
     static KdTreeData build(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options,
                             const KdCostModel& cost) {
         KdBuildInput input;
-        input.bounds.reserve(mesh.triangle_count());
-        for (std::size_t i = 0; i < mesh.triangle_count(); ++i)
-            input.bounds.push_back(mesh.is_degenerate(i) ? AABB{} : mesh.triangle_bounds(i));
+        input.bounds.resize(mesh.triangle_count());
+        in_arena(options.threads, [&] {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 4096),
+                              [&](const tbb::blocked_range<std::size_t>& r) {
+                                  for (std::size_t i = r.begin(); i != r.end(); ++i)
+                                      input.bounds[i] = mesh.is_degenerate(i) ? AABB{} : mesh.triangle_bounds(i);
+                              });
+        });
         input.clip = [&mesh](std::uint32_t i, const AABB& box) {
             return accel::clip_triangle(mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2), box);
         };
         return build_kd_tree(input, strategy, cost, options.threads);
     }
 
-    // Copies each leaf's triangles into consecutive packets (one cache-line run per leaf for incoherent
-    // rays) and renumbers the leaf to (packet count, first packet). The statistics keep triangle counts.
-    void lay_out_leaves(const TriangleMesh& mesh) {
-        for (KdNode& node : m_tree.nodes) {
+    // Runs f in an arena of `threads` threads (0: the caller's), as build_kd_tree does the build.
+    template <class F>
+    static void in_arena(int threads, F&& f) {
+        if (threads > 0)
+            tbb::task_arena(threads).execute(f);
+        else
+            f();
+    }
+
+    // Copies each leaf's triangles into consecutive packets behind their cull boxes (one cache-line run per
+    // leaf for incoherent rays) and renumbers the leaf to (packet count, offset). The statistics keep triangle
+    // counts. The leaves' offsets are counted first, in tree order, so that the packets are allocated once
+    // and the leaves filled in parallel.
+    void lay_out_leaves(const TriangleMesh& mesh, int threads) {
+        std::vector<std::uint32_t> leaves, firsts;
+        std::size_t units = 0;
+        for (std::uint32_t n = 0; n < m_tree.nodes.size(); ++n) {
+            const KdNode& node = m_tree.nodes[n];
             if (!node.is_leaf() || node.primitive_count() == 0) continue;
-            const std::uint32_t count = node.primitive_count();
-            const std::uint32_t one = node.primitive_offset();
-            const std::span<const std::uint32_t> triangles =
-                count == 1
-                    ? std::span<const std::uint32_t>(&one, 1)
-                    : std::span<const std::uint32_t>(m_tree.primitive_indices.data() + node.primitive_offset(), count);
-            const std::uint32_t first = m_packets.add_leaf(mesh, spatial_order(mesh, triangles));
-            node = KdNode::leaf(m_packets.packets_for(count), first);
+            leaves.push_back(n);
+            firsts.push_back(static_cast<std::uint32_t>(units));
+            units += m_packets.units_for(node.primitive_count());
         }
+        m_packets.allocate(units);
+        in_arena(threads, [&] {
+            tbb::parallel_for(
+                tbb::blocked_range<std::size_t>(0, leaves.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+                    for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                        KdNode& node = m_tree.nodes[leaves[k]];
+                        const std::uint32_t count = node.primitive_count();
+                        const std::uint32_t one = node.primitive_offset();
+                        const std::span<const std::uint32_t> triangles =
+                            count == 1 ? std::span<const std::uint32_t>(&one, 1)
+                                       : std::span<const std::uint32_t>(
+                                             m_tree.primitive_indices.data() + node.primitive_offset(), count);
+                        m_packets.fill_leaf(mesh, spatial_order(mesh, triangles), firsts[k]);
+                        node = KdNode::leaf(m_packets.packets_for(count), firsts[k]);
+                    }
+                });
+        });
         std::vector<std::uint32_t>().swap(m_tree.primitive_indices);
-        m_packets.shrink();
     }
 
     // The leaf's triangles ordered along a Morton curve over their centroids, so that each packet's cull

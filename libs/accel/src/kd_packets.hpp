@@ -102,15 +102,23 @@ public:
     std::uint32_t packets_for(std::uint32_t count) const {
         return (count + static_cast<std::uint32_t>(m_width) - 1) / static_cast<std::uint32_t>(m_width);
     }
-    /// Appends a leaf's triangles (mesh indices); returns where its first group starts (for group()).
-    std::uint32_t add_leaf(const TriangleMesh& mesh, std::span<const std::uint32_t> triangles) {
+    /// Units (kUnitFloats floats) of a leaf of `count` triangles: its groups' headers and packets.
+    std::size_t units_for(std::uint32_t count) const {
+        const std::size_t packets = packets_for(count);
+        const std::size_t groups = (packets + static_cast<std::size_t>(m_width) - 1) / static_cast<std::size_t>(m_width);
+        return (groups * header_floats() + packets * packet_floats()) / kUnitFloats;
+    }
+    /// Room for `units` units, to be filled by fill_leaf (sized once: growing leaf by leaf moved the whole
+    /// array again and again).
+    void allocate(std::size_t units) { m_data.assign(units * kUnitFloats, 0.0f); }
+    /// Writes a leaf's triangles (mesh indices) as units_for(size) units from unit `first` (then the leaf's
+    /// offset for group()). Leaves in units of their own may be filled from several threads at once.
+    void fill_leaf(const TriangleMesh& mesh, std::span<const std::uint32_t> triangles, std::uint32_t first) {
         const auto width = static_cast<std::size_t>(m_width);
-        const auto first = static_cast<std::uint32_t>(m_data.size() / kUnitFloats);
         const std::size_t packets = packets_for(static_cast<std::uint32_t>(triangles.size()));
+        std::size_t header = static_cast<std::size_t>(first) * kUnitFloats;
         for (std::size_t g = 0; g < packets; g += width) {
             const std::size_t in_group = std::min(width, packets - g);
-            const std::size_t header = m_data.size();
-            m_data.resize(header + header_floats() + in_group * packet_floats());
             for (std::size_t lane = 0; lane < width; ++lane) {  // empty boxes for missing packets
                 for (std::size_t a = 0; a < 3; ++a) {
                     m_data[header + a * width + lane] = kInfinity;
@@ -129,11 +137,12 @@ public:
                 }
                 write_cull_box(box, &m_data[header], k);
             }
+            header += header_floats() + in_group * packet_floats();
         }
-        return first;
     }
+
     std::size_t bytes() const { return m_data.size() * sizeof(float); }
-    /// The first group of a leaf (its offset from add_leaf): the header, then the packets.
+    /// The first group of a leaf (the offset fill_leaf wrote it at): the header, then the packets.
     const float* group(std::uint32_t offset) const { return m_data.data() + offset * kUnitFloats; }
     std::size_t header_floats() const { return 6 * static_cast<std::size_t>(m_width); }
     std::size_t packet_floats() const { return static_cast<std::size_t>(m_rows) * static_cast<std::size_t>(m_width); }
@@ -143,7 +152,6 @@ public:
         std::memcpy(&i, p + m_width * (m_rows - 1) + lane, sizeof(i));
         return i;
     }
-    void shrink() { m_data.shrink_to_fit(); }
 
 private:
     // Lane k of a header: the packet's bounds widened by kCullMargin of their largest coordinate (the ray's
@@ -429,7 +437,7 @@ template <int W>
     for (std::uintptr_t line = begin; line < end; line += 64) __builtin_prefetch(reinterpret_cast<const void*>(line));
 }
 
-/// Tests the `count` packets of the leaf at `first` (an offset from TrianglePackets::add_leaf), of width W,
+/// Tests the `count` packets of the leaf at `first` (its offset, see TrianglePackets::fill_leaf), of width W,
 /// against (tmin, closest). Closest-hit: the nearest hit lowers closest and fills hit (mesh triangle index).
 /// AnyHit: true at the first hit. [from, to] is the leaf's interval (see kd_traverse): the watertight test
 /// skips packets whose cull box the ray meets only outside it.

@@ -22,6 +22,9 @@ struct Split {
     float position = 0.0f;
     bool planar_left = true;  ///< where primitives lying in the split plane go
     float cost = 0.0f;
+    /// Primitives going below and above (straddlers counted on both sides) when the finder counted them
+    /// (the SAH sweep does), else -1.
+    std::int64_t below = -1, above = -1;
 };
 
 /// \brief Surface-area ratios of the two halves of a box split on one axis, for many planes: the box's
@@ -36,16 +39,6 @@ public:
         d[axis] = position - m_box.lo[axis];
         p_left = area(d) * m_inv;
         d[axis] = m_box.hi[axis] - position;
-        p_right = area(d) * m_inv;
-    }
-    /// The same for an axis known at compile time: the other two extents' product is then hoisted out of
-    /// a sweep (the same product, so the same bits).
-    template <int Axis>
-    void at(float position, float& p_left, float& p_right) const {
-        Vec3 d = m_extent;
-        d[Axis] = position - m_box.lo[Axis];
-        p_left = area(d) * m_inv;
-        d[Axis] = m_box.hi[Axis] - position;
         p_right = area(d) * m_inv;
     }
 
@@ -85,9 +78,12 @@ struct Event {
         return position < o.position || (position == o.position && (key >> 30) < (o.key >> 30));
     }
 };
-/// Appends the events of one primitive box to the three axes' lists.
-void add_events(const AABB& box, std::uint32_t slot, std::array<std::vector<Event>, 3>& events);
-void sort_events(std::array<std::vector<Event>, 3>& events);
+/// The events of the primitives at `slots` of `prims` (the clipped ones of a node's side), sorted, into
+/// `events` (replacing what they held).
+void sorted_events(std::span<const Prim> prims, std::span<const std::uint32_t> slots,
+                   std::array<std::vector<Event>, 3>& events);
+/// The root's events of every primitive (slot = index in prims), sorted; the axes in parallel.
+std::array<std::vector<Event>, 3> root_events(std::span<const Prim> prims);
 /// The best SAH split from sorted events of n primitives; a leaf (axis < 0) when none beats it.
 Split sweep_sah(const std::array<std::vector<Event>, 3>& events, std::size_t n, const AABB& box,
                 const KdCostModel& cost);

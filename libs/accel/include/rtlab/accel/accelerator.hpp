@@ -32,6 +32,7 @@ struct AccelStats {
     std::int64_t max_depth = -1;
     double mean_leaf_primitives = -1.0;  ///< over non-empty leaves
     std::int64_t bytes = -1;             ///< nodes + primitive index arrays + per-primitive precomputation
+    std::int64_t build_peak_bytes = -1;  ///< most the build held at once (Embree: its memory monitor's count)
     double sah_cost = -1.0;              ///< expected cost by the structure's own cost model
     std::int64_t leaf_width = -1;        ///< triangles a leaf tests at once (kd-trees over a mesh)
     /// What the builder would tell a user (the library writes nothing to a stream itself): for example
