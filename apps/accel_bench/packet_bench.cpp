@@ -9,6 +9,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <ctime>
 #include <span>
 #include <string>
 
@@ -55,9 +56,21 @@ void for_packets(std::size_t count, F&& f) {
     });
 }
 
+// Seconds on a clock: with one thread the CPU time of the tracing thread (the caller, which runs the
+// arena's work), so that time the scheduler gives to other processes on a shared machine is not counted;
+// wall time with more threads.
+double now(bool thread_time) {
+    if (thread_time) {
+        timespec ts{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+        return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+    }
+    return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
+
 // One pass of each kind; blocks of 1024 rays keep the tiles whole.
-void trace(const TriangleAccelerator& accel, const std::vector<Ray>& rays, bool packets, Traced& t) {
-    const auto start = Clock::now();
+void trace(const TriangleAccelerator& accel, const std::vector<Ray>& rays, bool packets, bool thread_time, Traced& t) {
+    const double start = now(thread_time);
     if (packets) {
         for_packets(rays.size(), [&](std::size_t first, std::size_t n) {
             accel.intersect_packet(std::span(rays).subspan(first, n), std::span(t.hits).subspan(first, n));
@@ -70,7 +83,7 @@ void trace(const TriangleAccelerator& accel, const std::vector<Ray>& rays, bool 
             }
         });
     }
-    const auto middle = Clock::now();
+    const double middle = now(thread_time);
     if (packets) {
         for_packets(rays.size(), [&](std::size_t first, std::size_t n) {
             accel.occluded_packet(std::span(rays).subspan(first, n), std::span(t.blocked).subspan(first, n));
@@ -80,8 +93,8 @@ void trace(const TriangleAccelerator& accel, const std::vector<Ray>& rays, bool 
             for (std::size_t i = first; i < first + n; ++i) t.blocked[i] = accel.occluded(rays[i]) ? 1 : 0;
         });
     }
-    t.closest_s.push_back(std::chrono::duration<double>(middle - start).count());
-    t.any_s.push_back(seconds_since(middle));
+    t.closest_s.push_back(middle - start);
+    t.any_s.push_back(now(thread_time) - middle);
 }
 
 bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
@@ -118,6 +131,10 @@ void run_packet_sets(const Options& o, const TriangleMesh& mesh, const std::vect
     fmt::print(
         "packets: {} x {} primary rays in 4 x 2 tiles; {} shadow rays from their hits ({}) towards ({}, {}, {})\n",
         o.primary_size, o.primary_size, sets[1].rays.size(), built.front().method, light.x, light.y, light.z);
+    if (arena.max_concurrency() == 1)
+        fmt::print(
+            "packets: with 1 thread the times are the tracing thread's CPU time (other processes' load "
+            "left out)\n");
     std::vector<std::string> summary;
     for (const Set& set : sets) {
         const Reference ref = reference_answers(reference, set.rays, o.sample_size, arena);
@@ -129,11 +146,12 @@ void run_packet_sets(const Options& o, const TriangleMesh& mesh, const std::vect
                 t->blocked.resize(set.rays.size());
             }
         // The methods and both ways take turns in each round (round -1 untimed), as trace_in_rounds.
+        const bool thread_time = arena.max_concurrency() == 1;
         arena.execute([&] {
             for (int round = -1; round < o.runs; ++round)
                 for (std::size_t m = 0; m < built.size(); ++m) {
-                    trace(*built[m].accel, set.rays, false, single[m]);
-                    trace(*built[m].accel, set.rays, true, packets[m]);
+                    trace(*built[m].accel, set.rays, false, thread_time, single[m]);
+                    trace(*built[m].accel, set.rays, true, thread_time, packets[m]);
                 }
         });
         for (std::size_t m = 0; m < built.size(); ++m) {

@@ -20,65 +20,39 @@
 
 #include <cmath>
 #include <cstdint>
-#include <optional>
+#include <new>
 #include <span>
+#include <type_traits>
 
 namespace rtlab::kd {
 
-/// What kd_traverse and kd_walk compute for one ray before the first node, with the same operations.
-struct WalkStart {
-    float origin[3], inv[3];
-    float tmin, tmax;  ///< the root interval, tmax already widened by overlap
-    float overlap;     ///< two of the ray's absolute margins
-    float end_slack;   ///< +inf for a ray with a zero direction component
-    unsigned octant;   ///< sign bits of the direction
-    /// False when the single walk answers a miss before its first node.
-    bool start(const KdTreeData& tree, const Ray& ray) {
-        if (tree.nodes.empty() || tree.bounds.is_empty() || !is_finite(ray.origin) || !is_finite(ray.direction))
-            return false;
-        const BoxRay box_ray(ray);
-        if (!box_ray.clip(tree.bounds, ray.tmax, tmin, tmax)) return false;
-        octant = static_cast<unsigned>(box_ray.negative[0] | box_ray.negative[1] << 1 | box_ray.negative[2] << 2);
-        overlap = 2.0f * kKdIntervalMargin * std::max(std::abs(tmin), std::abs(tmax));
-        tmax += overlap;
-        for (int a = 0; a < 3; ++a) {
-            origin[a] = box_ray.origin[a];
-            inv[a] = box_ray.inv[a];
-        }
-        end_slack =
-            std::isinf(box_ray.inv[0]) | std::isinf(box_ray.inv[1]) | std::isinf(box_ray.inv[2]) ? kInfinity : overlap;
-        return true;
-    }
+/// Storage for a T constructed later (or never): an array of them costs no initialisation.
+template <class T>
+union Deferred {
+    static_assert(std::is_trivially_destructible_v<T>);
+    Deferred() {}
+    T value;
 };
 
-/// One packet's walk: lanes `alive` of `starts` (one octant), leaves tested per lane by test_packets of
-/// width LeafW. Closest-hit: hits[lane] and the lane's bit in the result on a hit; any-hit: the bit alone.
+/// One packet's walk over the lanes `alive` (one octant); leaves tested per lane by test_packets of width
+/// LeafW. Closest-hit: hits[lane] and the lane's bit in the result on a hit; any-hit: the bit alone.
 template <TriangleTest Test, bool AnyHit, int W, int LeafW>
 class PacketWalk {
 public:
     using F = typename Lanes<W>::F;
     using I = typename Lanes<W>::I;
 
+    /// Each lane's origin, inverse direction, root interval [tmin, tmax] (tmax widened by overlap), overlap,
+    /// end slack and ray.tmax, as kd_traverse and kd_walk compute them.
+    struct Start {
+        F origin[3], inv[3];
+        F tmin, tmax, overlap, end_slack, ray_tmax;
+    };
+
     [[gnu::always_inline]] static int run(const KdTreeData& tree, const TrianglePackets& packets,
-                                          const std::optional<PacketRay<Test>>* rays, const Ray* const* source,
-                                          const WalkStart* starts, int alive, unsigned octant, MeshHit* hits) {
-        PacketWalk walk;
-        for (int lane = 0; lane < W; ++lane) {
-            const bool on = (alive >> lane) & 1;
-            const WalkStart& s = starts[lane];
-            for (int a = 0; a < 3; ++a) {
-                walk.m_origin[a][lane] = on ? s.origin[a] : 0.0f;
-                walk.m_inv[a][lane] = on ? s.inv[a] : 0.0f;
-            }
-            walk.m_tmin[lane] = on ? s.tmin : 0.0f;
-            walk.m_tmax[lane] = on ? s.tmax : 0.0f;
-            walk.m_overlap[lane] = on ? s.overlap : 0.0f;
-            walk.m_end_slack[lane] = on ? s.end_slack : 0.0f;
-            walk.m_closest[lane] = on ? source[lane]->tmax : 0.0f;
-            walk.m_closest_reach[lane] = walk.m_closest[lane] + walk.m_overlap[lane];
-            walk.m_closest_end[lane] = walk.m_closest_reach[lane] + walk.m_end_slack[lane];
-        }
-        walk.m_alive = alive;
+                                          const Deferred<PacketRay<Test>>* rays, const Start& start, int alive,
+                                          unsigned octant, MeshHit* hits) {
+        PacketWalk walk(start, alive);
         return walk.walk(tree, packets, rays, octant, hits);
     }
 
@@ -90,8 +64,21 @@ private:
         int direct;  // those of them whose single walk goes there without a stack entry
     };
 
+    [[gnu::always_inline]] PacketWalk(const Start& s, int alive)
+        : m_origin{s.origin[0], s.origin[1], s.origin[2]},
+          m_inv{s.inv[0], s.inv[1], s.inv[2]},
+          m_tmin(s.tmin),
+          m_tmax(s.tmax),
+          m_overlap(s.overlap),
+          m_end_slack(s.end_slack),
+          m_closest_reach(s.ray_tmax + s.overlap),
+          m_closest_end(m_closest_reach + s.end_slack),
+          m_alive(alive) {
+        for (int lane = 0; lane < W; ++lane) m_closest[lane] = s.ray_tmax[lane];
+    }
+
     [[gnu::always_inline]] int walk(const KdTreeData& tree, const TrianglePackets& packets,
-                                    const std::optional<PacketRay<Test>>* rays, unsigned octant, MeshHit* hits) {
+                                    const Deferred<PacketRay<Test>>* rays, unsigned octant, MeshHit* hits) {
         const KdNode* nodes = tree.nodes.data();
         Entry stack[64];  // deeper than any tree the builders make (their depth cap is 60)
         Entry* top = stack;
@@ -131,7 +118,7 @@ private:
                 for (int lanes = active; lanes != 0; lanes &= lanes - 1) {
                     const int lane = __builtin_ctz(static_cast<unsigned>(lanes));
                     float& closest = m_closest[lane];
-                    if (!test_packets<Test, AnyHit, LeafW>(packets, *rays[lane], node.primitive_offset(),
+                    if (!test_packets<Test, AnyHit, LeafW>(packets, rays[lane].value, node.primitive_offset(),
                                                            node.primitive_count(), closest, hits[lane]))
                         continue;
                     result |= 1 << lane;
@@ -186,30 +173,76 @@ private:
 template <TriangleTest Test, bool AnyHit, int W, int LeafW>
 [[gnu::always_inline]] inline void trace_packet(const KdTreeData& tree, const TrianglePackets& packets,
                                                 std::span<const Ray> rays, MeshHit* hits, std::uint8_t* blocked) {
-    std::optional<PacketRay<Test>> packet_rays[W];
-    const Ray* source[W];
-    WalkStart starts[W];
-    MeshHit lane_hits[W];
-    int pending = 0;
+    using Walk = PacketWalk<Test, AnyHit, W, LeafW>;
+    using F = typename Lanes<W>::F;
+    using I = typename Lanes<W>::I;
     const int n = static_cast<int>(rays.size());
-    for (int lane = 0; lane < n; ++lane) {
-        source[lane] = &rays[static_cast<std::size_t>(lane)];
-        packet_rays[lane].emplace(*source[lane]);
-        // A ray the single trace answers as a miss before the walk (an invalid leaf ray, a ray missing the
-        // root box) is left out.
-        if (packet_rays[lane]->valid() && starts[lane].start(tree, *source[lane])) pending |= 1 << lane;
-    }
-    int result = 0;
-    while (pending != 0) {
-        const unsigned octant = starts[__builtin_ctz(static_cast<unsigned>(pending))].octant;
-        int lanes = 0;
-        for (int rest = pending; rest != 0; rest &= rest - 1) {
-            const int lane = __builtin_ctz(static_cast<unsigned>(rest));
-            if (starts[lane].octant == octant) lanes |= 1 << lane;
+    // What kd_traverse, BoxRay and kd_walk compute for each ray before the first node, on all lanes at
+    // once: the same operations on the same floats. Lanes past n hold a ray that the clip keeps out.
+    typename Walk::Start s;
+    F d[3];
+    F ray_tmin;
+    int valid = 0;
+    Deferred<PacketRay<Test>> packet_rays[W];
+    for (int lane = 0; lane < W; ++lane) {
+        const Ray* r = lane < n ? &rays[static_cast<std::size_t>(lane)] : nullptr;
+        for (int a = 0; a < 3; ++a) {
+            s.origin[a][lane] = r ? r->origin[a] : 0.0f;
+            d[a][lane] = r ? r->direction[a] : 1.0f;
         }
+        ray_tmin[lane] = r ? r->tmin : 1.0f;
+        s.ray_tmax[lane] = r ? r->tmax : 0.0f;
+        if (!r) continue;
+        // A ray the single trace answers as a miss before the walk (an invalid leaf ray) is left out.
+        new (&packet_rays[lane].value) PacketRay<Test>(*r);
+        if (packet_rays[lane].value.valid()) valid |= 1 << lane;
+    }
+    const F inf = splat<W>(kInfinity);
+    const I finite = (abs_lanes<W>(s.origin[0]) < inf) & (abs_lanes<W>(s.origin[1]) < inf) &
+                     (abs_lanes<W>(s.origin[2]) < inf) & (abs_lanes<W>(d[0]) < inf) & (abs_lanes<W>(d[1]) < inf) &
+                     (abs_lanes<W>(d[2]) < inf);
+    valid &= lane_bits(finite);
+    if (tree.nodes.empty() || tree.bounds.is_empty()) valid = 0;
+    // BoxRay::clip against the root box.
+    constexpr float kTwoGamma3 = 2.0f * gamma_bound(3);
+    const auto enlarge = [&](const F& t) {
+        return t * (t > splat<W>(0.0f) ? splat<W>(1.0f + kTwoGamma3) : splat<W>(1.0f - kTwoGamma3));
+    };
+    F t0 = ray_tmin, t1 = enlarge(s.ray_tmax);
+    unsigned octant_bits[3];
+    for (int a = 0; a < 3; ++a) {
+        s.inv[a] = splat<W>(1.0f) / d[a];
+        const I negative = reinterpret_cast<I>(s.inv[a]) < 0;  // the sign bit, -0 and -inf included
+        octant_bits[a] = static_cast<unsigned>(lane_bits(negative));
+        const F lo = splat<W>(tree.bounds.lo[a]), hi = splat<W>(tree.bounds.hi[a]);
+        const F near_plane = negative ? hi : lo, far_plane = negative ? lo : hi;
+        const F near_t = (near_plane - s.origin[a]) * s.inv[a];
+        const F far_t = enlarge((far_plane - s.origin[a]) * s.inv[a]);
+        t0 = near_t > t0 ? near_t : t0;
+        t1 = far_t < t1 ? far_t : t1;
+    }
+    valid &= lane_bits(t0 <= t1);
+    // kd_walk's margins: overlap from max(|tmin|, |tmax|) as std::max takes it, end_slack +inf for a zero
+    // direction component.
+    const F a0 = abs_lanes<W>(t0), a1 = abs_lanes<W>(t1);
+    s.overlap = splat<W>(2.0f * kKdIntervalMargin) * (a0 < a1 ? a1 : a0);
+    s.tmin = t0;
+    s.tmax = t1 + s.overlap;
+    const I zero_component =
+        (abs_lanes<W>(s.inv[0]) == inf) | (abs_lanes<W>(s.inv[1]) == inf) | (abs_lanes<W>(s.inv[2]) == inf);
+    s.end_slack = zero_component ? inf : s.overlap;
+
+    MeshHit lane_hits[W];
+    int result = 0;
+    for (int pending = valid; pending != 0;) {
+        const int first = __builtin_ctz(static_cast<unsigned>(pending));
+        const unsigned octant = ((octant_bits[0] >> first) & 1u) | ((octant_bits[1] >> first) & 1u) << 1 |
+                                ((octant_bits[2] >> first) & 1u) << 2;
+        // The pending lanes whose sign bits are the first one's.
+        int lanes = pending;
+        for (int a = 0; a < 3; ++a) lanes &= static_cast<int>((octant >> a) & 1u ? octant_bits[a] : ~octant_bits[a]);
         pending &= ~lanes;
-        result |= PacketWalk<Test, AnyHit, W, LeafW>::run(tree, packets, packet_rays, source, starts, lanes, octant,
-                                                          lane_hits);
+        result |= Walk::run(tree, packets, packet_rays, s, lanes, octant, lane_hits);
     }
     for (int lane = 0; lane < n; ++lane) {
         const bool hit = (result >> lane) & 1;
