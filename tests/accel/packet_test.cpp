@@ -231,6 +231,43 @@ TEST_CASE("kd packets answer as single rays for flat and stacked coplanar grids 
     check_kd_packets("4 stacked coplanar grids", stacked, rays);
 }
 
+// Squares whose corners belong to one square only, hit exactly at those corners (the set where widening
+// only the root interval lost hits, split_plane_agreement_test.cpp): only the per-node margins keep the
+// hits there, so each lane must have them. Packets of one octant, of rays from anywhere, and tiles of rays
+// from one eye at the corners.
+TEST_CASE("kd packets answer as single rays at corner vertices of isolated squares", "[accel]") {
+    const int n = 64;
+    const float spacing = 1.0f / 128.0f;
+    TriangleMesh m;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+            m.positions.emplace_back(static_cast<float>(i - n / 2) * spacing, static_cast<float>(j - n / 2) * spacing,
+                                     0.0f);
+    auto at = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+    for (int j = 0; j < n; j += 2)
+        for (int i = 0; i < n; i += 2) {
+            m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    Rng rng(5);
+    std::vector<Ray> rays;
+    auto corner = [&] {
+        const int i = 1 + static_cast<int>(rng.uniform_u32(n - 2)), j = 1 + static_cast<int>(rng.uniform_u32(n - 2));
+        return Point3(static_cast<float>(i - n / 2) * spacing, static_cast<float>(j - n / 2) * spacing, 0.0f);
+    };
+    for (int r = 0; r < 16000 / kRayDivisor; ++r) {
+        const Point3 target = corner();
+        const Vec3 d(rng.uniform() - 0.5f, rng.uniform() - 0.5f, (r % 2 ? 1.0f : -1.0f) * (0.1f + rng.uniform()));
+        rays.push_back(Ray{target - d * 3.0f, d});
+    }
+    rays = by_octant(std::move(rays));
+    for (int r = 0; r < 8000 / kRayDivisor; ++r) {
+        const Point3 eye = Point3(0.1f, -0.05f, 0.3f);
+        rays.push_back(Ray{eye, corner() - eye});
+    }
+    check_kd_packets("isolated squares", m, rays);
+}
+
 TEST_CASE("kd packets answer as single rays for camera tiles and shadow rays on an icosphere and triangle soup",
           "[accel]") {
     const TriangleMesh sphere = test::icosphere(4);
