@@ -53,7 +53,27 @@ public:
                                           const Deferred<PacketRay<Test>>* rays, const Start& start, int alive,
                                           unsigned octant, MeshHit* hits) {
         PacketWalk walk(start, alive);
-        return walk.walk(tree, packets, rays, octant, hits);
+        // One walk per octant, as kd_traverse: the near side of each axis a constant, and branches of its
+        // own for the predictor (bunny and dragon, 1 thread, same-run ratios to rtcIntersect8 over two runs
+        // each: shadow rays 0.47-0.84 -> 0.66-0.89 any-hit, primary any-hit 0.75-1.07 -> 0.82-1.30).
+        switch (octant) {
+            case 0:
+                return walk.template walk<0>(tree, packets, rays, hits);
+            case 1:
+                return walk.template walk<1>(tree, packets, rays, hits);
+            case 2:
+                return walk.template walk<2>(tree, packets, rays, hits);
+            case 3:
+                return walk.template walk<3>(tree, packets, rays, hits);
+            case 4:
+                return walk.template walk<4>(tree, packets, rays, hits);
+            case 5:
+                return walk.template walk<5>(tree, packets, rays, hits);
+            case 6:
+                return walk.template walk<6>(tree, packets, rays, hits);
+            default:
+                return walk.template walk<7>(tree, packets, rays, hits);
+        }
     }
 
 private:
@@ -77,8 +97,9 @@ private:
         for (int lane = 0; lane < W; ++lane) m_closest[lane] = s.ray_tmax[lane];
     }
 
+    template <unsigned Octant>
     [[gnu::always_inline]] int walk(const KdTreeData& tree, const TrianglePackets& packets,
-                                    const Deferred<PacketRay<Test>>* rays, unsigned octant, MeshHit* hits) {
+                                    const Deferred<PacketRay<Test>>* rays, MeshHit* hits) {
         const KdNode* nodes = tree.nodes.data();
         Entry stack[64];  // deeper than any tree the builders make (their depth cap is 60)
         Entry* top = stack;
@@ -92,7 +113,7 @@ private:
                 // comparisons (NaN failing every one), the same ends of the children's intervals.
                 const auto axis = static_cast<std::uint32_t>(node.axis());
                 const std::uint32_t empty = node.empty_children();
-                const std::uint32_t side = (octant >> axis) & 1u;
+                const std::uint32_t side = (Octant >> axis) & 1u;
                 const F t_plane = (splat<W>(node.split()) - m_origin[axis]) * m_inv[axis];
                 const F t_near_end = t_plane + m_overlap;
                 const std::uint32_t near = node.children() | side;
