@@ -136,11 +136,13 @@ private:
                     continue;
                 }
             } else if (node.primitive_count() != 0) {
+                // The leaf's lines asked for once, not once per ray.
+                prefetch_packets(packets, node.primitive_offset(), node.primitive_count());
                 for (int lanes = active; lanes != 0; lanes &= lanes - 1) {
                     const int lane = __builtin_ctz(static_cast<unsigned>(lanes));
                     float& closest = m_closest[lane];
-                    if (!test_packets<Test, AnyHit, LeafW>(packets, rays[lane].value, node.primitive_offset(),
-                                                           node.primitive_count(), closest, hits[lane]))
+                    if (!test_packets<Test, AnyHit, LeafW, false>(packets, rays[lane].value, node.primitive_offset(),
+                                                                  node.primitive_count(), closest, hits[lane]))
                         continue;
                     result |= 1 << lane;
                     if constexpr (AnyHit) {

@@ -339,17 +339,24 @@ template <TriangleTest Test, int W>
     }
 }
 
+/// Asks for every cache line of packets [first, first + count).
+[[gnu::always_inline]] inline void prefetch_packets(const TrianglePackets& packets, std::uint32_t first,
+                                                    std::uint32_t count) {
+    const char* begin = reinterpret_cast<const char*>(packets.packet(first));
+    const char* end = reinterpret_cast<const char*>(packets.packet(first + count));
+    for (const char* line = begin; line < end; line += 64) __builtin_prefetch(line);
+}
+
 /// Tests packets [first, first + count) of width W against (tmin, closest). Closest-hit: the nearest hit
-/// lowers closest and fills hit (mesh triangle index). AnyHit: true at the first hit.
-template <TriangleTest Test, bool AnyHit, int W>
+/// lowers closest and fills hit (mesh triangle index). AnyHit: true at the first hit. Prefetch false: the
+/// caller has already asked for the leaf's lines (a packet of rays testing one leaf ray after ray).
+template <TriangleTest Test, bool AnyHit, int W, bool Prefetch = true>
 [[gnu::always_inline]] inline bool test_packets(const TrianglePackets& packets, const PacketRay<Test>& r,
                                                 std::uint32_t first, std::uint32_t count, float& closest,
                                                 MeshHit& hit) {
     // The leaf's packets are one contiguous run, usually not in cache: ask for all of its lines at once
     // rather than one miss after another.
-    const char* begin = reinterpret_cast<const char*>(packets.packet(first));
-    const char* end = reinterpret_cast<const char*>(packets.packet(first + count));
-    for (const char* line = begin; line < end; line += 64) __builtin_prefetch(line);
+    if constexpr (Prefetch) prefetch_packets(packets, first, count);
     bool any = false;
     for (std::uint32_t k = first; k < first + count; ++k) {
         typename Lanes<W>::F t{}, u{}, v{};
