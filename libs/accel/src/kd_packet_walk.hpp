@@ -205,14 +205,22 @@ template <TriangleTest Test, bool AnyHit, int W, int LeafW>
     typename Walk::Start s;
     F d[3];
     F ray_tmin;
-    for (int lane = 0; lane < W; ++lane) {
-        const Ray* r = lane < n ? &rays[static_cast<std::size_t>(lane)] : nullptr;
+    for (int lane = 0; lane < n; ++lane) {
+        const Ray& r = rays[static_cast<std::size_t>(lane)];
         for (int a = 0; a < 3; ++a) {
-            s.origin[a][lane] = r ? r->origin[a] : 0.0f;
-            d[a][lane] = r ? r->direction[a] : 1.0f;
+            s.origin[a][lane] = r.origin[a];
+            d[a][lane] = r.direction[a];
         }
-        ray_tmin[lane] = r ? r->tmin : 1.0f;
-        s.ray_tmax[lane] = r ? r->tmax : 0.0f;
+        ray_tmin[lane] = r.tmin;
+        s.ray_tmax[lane] = r.tmax;
+    }
+    for (int lane = n; lane < W; ++lane) {
+        for (int a = 0; a < 3; ++a) {
+            s.origin[a][lane] = 0.0f;
+            d[a][lane] = 1.0f;
+        }
+        ray_tmin[lane] = 1.0f;
+        s.ray_tmax[lane] = 0.0f;
     }
     const F inf = splat<W>(kInfinity);
     const I finite = (abs_lanes<W>(s.origin[0]) < inf) & (abs_lanes<W>(s.origin[1]) < inf) &
