@@ -191,6 +191,14 @@ private:
     int m_alive = 0;
 };
 
+/// BoxRay::enlarge on every lane (a function, not a lambda: a lambda would not take the AVX2 target of
+/// the walk that calls it when it is not inlined).
+template <int W>
+[[gnu::always_inline]] inline typename Lanes<W>::F enlarge_lanes(const typename Lanes<W>::F& t) {
+    constexpr float kTwoGamma3 = 2.0f * gamma_bound(3);
+    return t * (t > splat<W>(0.0f) ? splat<W>(1.0f + kTwoGamma3) : splat<W>(1.0f - kTwoGamma3));
+}
+
 /// Traces up to W rays (rays.size() <= W) as packets, one per octant among them; hits or blocked get each
 /// ray's answer (hits for closest-hit, blocked for any-hit).
 template <TriangleTest Test, bool AnyHit, int W, int LeafW>
@@ -229,11 +237,7 @@ template <TriangleTest Test, bool AnyHit, int W, int LeafW>
     int valid = lane_bits(finite) & ((1 << n) - 1);
     if (tree.nodes.empty() || tree.bounds.is_empty()) valid = 0;
     // BoxRay::clip against the root box.
-    constexpr float kTwoGamma3 = 2.0f * gamma_bound(3);
-    const auto enlarge = [&](const F& t) {
-        return t * (t > splat<W>(0.0f) ? splat<W>(1.0f + kTwoGamma3) : splat<W>(1.0f - kTwoGamma3));
-    };
-    F t0 = ray_tmin, t1 = enlarge(s.ray_tmax);
+    F t0 = ray_tmin, t1 = enlarge_lanes<W>(s.ray_tmax);
     unsigned octant_bits[3];
     for (int a = 0; a < 3; ++a) {
         s.inv[a] = splat<W>(1.0f) / d[a];
@@ -242,7 +246,7 @@ template <TriangleTest Test, bool AnyHit, int W, int LeafW>
         const F lo = splat<W>(tree.bounds.lo[a]), hi = splat<W>(tree.bounds.hi[a]);
         const F near_plane = negative ? hi : lo, far_plane = negative ? lo : hi;
         const F near_t = (near_plane - s.origin[a]) * s.inv[a];
-        const F far_t = enlarge((far_plane - s.origin[a]) * s.inv[a]);
+        const F far_t = enlarge_lanes<W>((far_plane - s.origin[a]) * s.inv[a]);
         t0 = near_t > t0 ? near_t : t0;
         t1 = far_t < t1 ? far_t : t1;
     }
