@@ -1,6 +1,7 @@
 // rtlab-accel: builds acceleration structures over a mesh and reports build time, size, closest-hit and
 // any-hit throughput, and mismatches against a reference (DESIGN.md, FORMATS.md).
 #include "options.hpp"
+#include "packet_bench.hpp"
 #include "ray_sets.hpp"
 #include "report.hpp"
 #include "scoring.hpp"
@@ -59,6 +60,11 @@ void run(Options& o) {
                                       threads, std::string(to_string(build.triangle_test))});
     // Every method is built first, then each ray set is traced with all of them in turn.
     const std::vector<Built> built = build_methods(o.methods, mesh, build, o.runs, arena);
+    if (o.packets) {
+        run_packet_sets(o, mesh, built, reference.get(), report, arena);
+        print_footer(o.runs, threads);
+        return;
+    }
     bool hits_written = false;
     for (std::size_t s = 0; s < sets.size(); ++s) {
         const std::vector<Ray> sampled = sample_rays(sets[s].rays, o.sample_size);

@@ -33,6 +33,11 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("--sample", o.sample_size, "rays checked against the reference per ray set (default 2000)");
     app.add_option("--primary-size", o.primary_size, "N of the N x N primary set (default 1024)")
         ->check(CLI::PositiveNumber);
+    app.add_flag(
+        "--packets", o.packets,
+        "instead of --rays: trace the primary set in 4 x 2 pixel tiles and shadow rays from its hits towards a "
+        "point above the mesh, each method one ray at a time and in packets (the kd-trees' packet walk, "
+        "Embree's rtcIntersect8), and count where the packets' answers differ from the single rays'");
     app.add_option("--random-count", o.random_count, "rays in the random set (default 1,000,000)");
 }
 
@@ -53,7 +58,10 @@ void complete_options(Options& o) {
     for (const auto& m : o.methods)
         if (std::find(known.begin(), known.end(), m) == known.end())
             make_accelerator(m, TriangleMesh{});  // throws the listing
-    if (o.ray_specs.empty()) o.ray_specs = {"primary", "random"};
+    if (o.packets && (!o.ray_specs.empty() || !o.spawn_path.empty()))
+        throw Error("--packets traces its own ray sets: give no --rays or --spawn with it");
+    if (o.ray_specs.empty())
+        o.ray_specs = o.packets ? std::vector<std::string>{"primary"} : std::vector<std::string>{"primary", "random"};
     const bool one_file = o.ray_specs.size() == 1 && o.ray_specs[0] != "primary" && o.ray_specs[0] != "random";
     if (!o.spawn_path.empty() && !one_file)
         throw Error("--spawn " + o.spawn_path + " needs exactly one --rays FILE: the rays whose triangles it lists");

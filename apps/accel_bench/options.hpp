@@ -18,6 +18,7 @@ struct Options {
     int threads = 0, runs = 5, primary_size = 1024, leaf_width = 0;
     std::size_t random_count = 1000000, sample_size = 2000;
     std::string hits_out, csv_path, triangle = "watertight";
+    bool packets = false;  // --packets: the coherent sets, singly and in 4 x 2 packets
 };
 
 void add_options(CLI::App& app, Options& options);

@@ -105,9 +105,73 @@ public:
         return r.tfar == -std::numeric_limits<float>::infinity();
     }
 
+    // Packets of 8 through rtcIntersect8 / rtcOccluded8 (the packet interface Embree offers for coherent
+    // rays); rays Embree would reject are left out by the valid mask and answered as misses.
+    void intersect_packet(std::span<const Ray> rays, std::span<MeshHit> hits) const override {
+        for (std::size_t first = 0; first < rays.size(); first += 8) {
+            const std::size_t n = std::min<std::size_t>(8, rays.size() - first);
+            alignas(32) int valid[8] = {};
+            alignas(32) RTCRayHit8 rh{};
+            for (std::size_t k = 0; k < n; ++k) {
+                const Ray& ray = rays[first + k];
+                valid[k] = acceptable(ray) ? -1 : 0;
+                if (!valid[k]) continue;
+                fill8(ray, rh.ray, k);
+                rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+            }
+            RTCIntersectContext context;
+            rtcInitIntersectContext(&context);
+            context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+            rtcIntersect8(valid, m_scene, &context, &rh);
+            for (std::size_t k = 0; k < n; ++k) {
+                const Ray& ray = rays[first + k];
+                const float t = rh.ray.tfar[k];
+                const bool hit =
+                    valid[k] && rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID && t > ray.tmin && t < ray.tmax;
+                hits[first + k] = hit ? MeshHit{t, rh.hit.primID[k], rh.hit.u[k], rh.hit.v[k]} : MeshHit{};
+            }
+        }
+    }
+
+    void occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const override {
+        for (std::size_t first = 0; first < rays.size(); first += 8) {
+            const std::size_t n = std::min<std::size_t>(8, rays.size() - first);
+            alignas(32) int valid[8] = {};
+            alignas(32) RTCRay8 r{};
+            for (std::size_t k = 0; k < n; ++k) {
+                valid[k] = acceptable(rays[first + k]) ? -1 : 0;
+                if (valid[k]) fill8(rays[first + k], r, k);
+            }
+            RTCIntersectContext context;
+            rtcInitIntersectContext(&context);
+            context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+            rtcOccluded8(valid, m_scene, &context, &r);
+            for (std::size_t k = 0; k < n; ++k)
+                blocked[first + k] = valid[k] && r.tfar[k] == -std::numeric_limits<float>::infinity() ? 1 : 0;
+        }
+    }
+
     AccelStats stats() const override { return m_stats; }
 
 private:
+    // Lane k of a packet, as fill() fills a single ray.
+    static void fill8(const Ray& ray, RTCRay8& r, std::size_t k) {
+        RTCRay one;
+        fill(ray, one);
+        r.org_x[k] = one.org_x;
+        r.org_y[k] = one.org_y;
+        r.org_z[k] = one.org_z;
+        r.dir_x[k] = one.dir_x;
+        r.dir_y[k] = one.dir_y;
+        r.dir_z[k] = one.dir_z;
+        r.tnear[k] = one.tnear;
+        r.tfar[k] = one.tfar;
+        r.mask[k] = one.mask;
+        r.time[k] = one.time;
+        r.flags[k] = one.flags;
+    }
+
     static bool acceptable(const Ray& ray) {
         constexpr float kLarge = 1e18f;  // Embree's FLT_LARGE is 1.844e18
         for (int a = 0; a < 3; ++a)

@@ -3,6 +3,7 @@
 #include <rtlab/accel/kd_build.hpp>
 #include <rtlab/accel/kd_tree.hpp>
 
+#include "kd_packet_walk.hpp"
 #include "kd_packets.hpp"
 #include "mesh_triangles.hpp"
 
@@ -59,9 +60,38 @@ public:
         return trace<true>(ray, ignored);
     }
 
+    void intersect_packet(std::span<const Ray> rays, std::span<MeshHit> hits) const override {
+        trace_packets<false>(rays, hits.data(), nullptr);
+    }
+
+    void occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const override {
+        trace_packets<true>(rays, nullptr, blocked.data());
+    }
+
     AccelStats stats() const override { return m_tree.stats; }
 
 private:
+    // Packets as wide as the leaves: 8 lanes where the CPU runs AVX2 leaves, the walk compiled for AVX2
+    // with them; 4 lanes in the baseline instruction set otherwise.
+    template <bool AnyHit>
+    void trace_packets(std::span<const Ray> rays, MeshHit* hits, std::uint8_t* blocked) const {
+        accel::dispatch_triangle_test(m_packets.test(), [&]<TriangleTest Test>() {
+#if RTLAB_KD_HAVE_AVX2_LEAVES
+            if (m_packets.width() == 8) {
+                for (std::size_t i = 0; i < rays.size(); i += 8)
+                    kd::trace_packet_avx2<Test, AnyHit>(m_tree, m_packets,
+                                                        rays.subspan(i, std::min<std::size_t>(8, rays.size() - i)),
+                                                        hits ? hits + i : nullptr, blocked ? blocked + i : nullptr);
+                return;
+            }
+#endif
+            for (std::size_t i = 0; i < rays.size(); i += 4)
+                kd::trace_packet<Test, AnyHit, 4, 4>(m_tree, m_packets,
+                                                     rays.subspan(i, std::min<std::size_t>(4, rays.size() - i)),
+                                                     hits ? hits + i : nullptr, blocked ? blocked + i : nullptr);
+        });
+    }
+
     template <bool AnyHit>
     bool trace(const Ray& ray, MeshHit& hit) const {
         return accel::dispatch_triangle_test(m_packets.test(), [&]<TriangleTest Test>() {

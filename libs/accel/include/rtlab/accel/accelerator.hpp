@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,6 +60,13 @@ public:
     virtual bool intersect(const Ray& ray, MeshHit& hit) const = 0;
     /// Any hit with ray.tmin < t < ray.tmax; stops at the first blocker.
     virtual bool occluded(const Ray& ray) const = 0;
+    /// Closest hits of a batch of rays, hits[i] answering rays[i] (MeshHit{} for a miss): each answer is
+    /// intersect()'s for that ray alone, bit for bit. Structures that trace coherent rays together (camera
+    /// rays, shadow rays towards one point: give them as 4 x 2 pixel tiles) override it; the default traces
+    /// them one by one. hits.size() must be at least rays.size().
+    virtual void intersect_packet(std::span<const Ray> rays, std::span<MeshHit> hits) const;
+    /// occluded() of each ray (1 or 0 in blocked[i]), as intersect_packet.
+    virtual void occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
     virtual AccelStats stats() const = 0;
 };
 
