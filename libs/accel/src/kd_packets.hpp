@@ -105,7 +105,8 @@ public:
     /// Units (kUnitFloats floats) of a leaf of `count` triangles: its groups' headers and packets.
     std::size_t units_for(std::uint32_t count) const {
         const std::size_t packets = packets_for(count);
-        const std::size_t groups = (packets + static_cast<std::size_t>(m_width) - 1) / static_cast<std::size_t>(m_width);
+        const std::size_t groups =
+            (packets + static_cast<std::size_t>(m_width) - 1) / static_cast<std::size_t>(m_width);
         return (groups * header_floats() + packets * packet_floats()) / kUnitFloats;
     }
     /// Room for `units` units, to be filled by fill_leaf (sized once: growing leaf by leaf moved the whole

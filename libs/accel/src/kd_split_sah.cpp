@@ -102,6 +102,8 @@ void add_axis_events(std::span<const Prim> prims, int axis, std::vector<Event>& 
 
 }  // namespace
 
+constexpr std::size_t kKeptKeys = 1u << 13;
+
 void sorted_events(std::span<const Prim> prims, std::span<const std::uint32_t> slots,
                    std::array<std::vector<Event>, 3>& events) {
     // Sorted as single integers -- sort_key over the slot -- which compare in one instruction where events
@@ -130,6 +132,7 @@ void sorted_events(std::span<const Prim> prims, std::span<const std::uint32_t> s
             out[k] = Event(type == kEnd ? box.hi[axis] : box.lo[axis], type, slot);
         }
     }
+    if (keys.capacity() > kKeptKeys) std::vector<std::uint64_t>().swap(keys);  // not held after the build
 }
 
 std::array<std::vector<Event>, 3> root_events(std::span<const Prim> prims) {
@@ -173,6 +176,8 @@ struct Candidates {
         capacity = n;
     }
 };
+
+constexpr std::size_t kKeptCandidates = 1u << 12;
 
 Candidates& thread_candidates(int axis) {
     thread_local std::array<Candidates, 3> candidates;
@@ -356,6 +361,9 @@ void sweep_axis(const std::vector<Event>& events, std::size_t n, const AABB& box
     gather(events, n, lo, hi, c);
     cost_candidates<Axis>(box, cost, c);
     pick(Axis, c, best);
+    // A large node's lists are not kept: the thread would hold the root's (megabytes) after the build, and
+    // their allocation is small beside such a node's sweep.
+    if (c.capacity > kKeptCandidates) c = Candidates{};
 }
 
 }  // namespace
