@@ -12,7 +12,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <optional>
 #include <span>
 #include <string>
 
@@ -95,32 +94,22 @@ private:
     template <bool AnyHit>
     bool trace(const Ray& ray, MeshHit& hit) const {
         return accel::dispatch_triangle_test(m_packets.test(), [&]<TriangleTest Test>() {
-            const BoxRay box_ray(ray);
-            // The triangle tests' per-ray data, made at the first leaf: most queries of a scene's meshes miss
-            // the tree's box or reach no leaf.
-            std::optional<kd::PacketRay<Test>> r;
-            auto packet_ray = [&]() -> const kd::PacketRay<Test>* {
-                if (!r) r.emplace(ray, box_ray);
-                return r->valid() ? &*r : nullptr;
-            };
+            const kd::PacketRay<Test> r(ray);
+            if (!r.valid()) return false;
 #if RTLAB_KD_HAVE_AVX2_LEAVES
             // Packets of 8: the walk stays in the baseline instruction set (it gains nothing from AVX2) and
             // calls the AVX2 leaf test, about once per ray.
             if (m_packets.width() == 8) {
-                return kd_traverse<AnyHit>(
-                    m_tree, ray, box_ray, [&](const KdNode& leaf, float& closest, float from, float to) {
-                        const kd::PacketRay<Test>* p = packet_ray();
-                        return p && kd::test_packets_avx2<Test, AnyHit>(m_packets, *p, leaf.primitive_offset(),
-                                                                        leaf.primitive_count(), closest, hit, from, to);
-                    });
+                return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest) {
+                    return kd::test_packets_avx2<Test, AnyHit>(m_packets, r, leaf.primitive_offset(),
+                                                               leaf.primitive_count(), closest, hit);
+                });
             }
 #endif
-            return kd_traverse<AnyHit>(
-                m_tree, ray, box_ray, [&](const KdNode& leaf, float& closest, float from, float to) {
-                    const kd::PacketRay<Test>* p = packet_ray();
-                    return p && kd::test_packets<Test, AnyHit, 4>(m_packets, *p, leaf.primitive_offset(),
-                                                                  leaf.primitive_count(), closest, hit, from, to);
-                });
+            return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest) {
+                return kd::test_packets<Test, AnyHit, 4>(m_packets, r, leaf.primitive_offset(), leaf.primitive_count(),
+                                                         closest, hit);
+            });
         });
     }
 
@@ -150,21 +139,21 @@ private:
             f();
     }
 
-    // Copies each leaf's triangles into consecutive packets behind their cull boxes (one cache-line run per
-    // leaf for incoherent rays) and renumbers the leaf to (packet count, offset). The statistics keep triangle
-    // counts. The leaves' offsets are counted first, in tree order, so that the packets are allocated once
+    // Copies each leaf's triangles into consecutive packets (one cache-line run per leaf for incoherent
+    // rays) and renumbers the leaf to (packet count, first packet). The statistics keep triangle counts.
+    // The leaves' first packets are counted first, in tree order, so that the packets are allocated once
     // and the leaves filled in parallel.
     void lay_out_leaves(const TriangleMesh& mesh, int threads) {
         std::vector<std::uint32_t> leaves, firsts;
-        std::size_t units = 0;
+        std::size_t packets = 0;
         for (std::uint32_t n = 0; n < m_tree.nodes.size(); ++n) {
             const KdNode& node = m_tree.nodes[n];
             if (!node.is_leaf() || node.primitive_count() == 0) continue;
             leaves.push_back(n);
-            firsts.push_back(static_cast<std::uint32_t>(units));
-            units += m_packets.units_for(node.primitive_count());
+            firsts.push_back(static_cast<std::uint32_t>(packets));
+            packets += m_packets.packets_for(node.primitive_count());
         }
-        m_packets.allocate(units);
+        m_packets.allocate(packets);
         in_arena(threads, [&] {
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(0, leaves.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -176,41 +165,12 @@ private:
                             count == 1 ? std::span<const std::uint32_t>(&one, 1)
                                        : std::span<const std::uint32_t>(
                                              m_tree.primitive_indices.data() + node.primitive_offset(), count);
-                        m_packets.fill_leaf(mesh, spatial_order(mesh, triangles), firsts[k]);
+                        m_packets.fill_leaf(mesh, triangles, firsts[k]);
                         node = KdNode::leaf(m_packets.packets_for(count), firsts[k]);
                     }
                 });
         });
         std::vector<std::uint32_t>().swap(m_tree.primitive_indices);
-    }
-
-    // The leaf's triangles ordered along a Morton curve over their centroids, so that each packet's cull
-    // box is small. Ties keep the leaf's order: the layout is a function of the tree alone.
-    static std::vector<std::uint32_t> spatial_order(const TriangleMesh& mesh,
-                                                    std::span<const std::uint32_t> triangles) {
-        std::vector<std::uint32_t> order(triangles.begin(), triangles.end());
-        if (order.size() <= 1) return order;
-        AABB centroids;
-        for (std::uint32_t i : order) centroids.expand(mesh.triangle_bounds(i).center());
-        const Vec3 extent = centroids.extent();
-        auto code = [&](std::uint32_t i) {
-            const Point3 c = mesh.triangle_bounds(i).center();
-            std::uint32_t key = 0;
-            std::uint32_t cell[3];
-            for (int a = 0; a < 3; ++a) {
-                const float x = extent[a] > 0.0f ? (c[a] - centroids.lo[a]) / extent[a] : 0.0f;
-                cell[a] = static_cast<std::uint32_t>(std::clamp(x, 0.0f, 1.0f) * 1023.0f);
-            }
-            for (int bit = 9; bit >= 0; --bit)
-                for (int a = 0; a < 3; ++a) key = key << 1 | ((cell[a] >> bit) & 1u);
-            return key;
-        };
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed;
-        keyed.reserve(order.size());
-        for (std::uint32_t i : order) keyed.emplace_back(code(i), i);
-        std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        for (std::size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].second;
-        return order;
     }
 
     std::string m_name;

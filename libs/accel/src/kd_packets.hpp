@@ -8,12 +8,10 @@
 // packets of 8 are compiled for AVX2 in a function of their own, called once per leaf, and chosen at run
 // time on CPUs that have it (see kd_mesh.cpp).
 #include <rtlab/accel/accelerator.hpp>
-#include <rtlab/core/box_ray.hpp>
 #include <rtlab/geometry/triangle_intersect.hpp>
 #include <rtlab/geometry/triangle_mesh.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <span>
@@ -71,28 +69,16 @@ template <int W>
     return lane_bits(low) | lane_bits(high) << 4;
 }
 
-/// Relative margin of the packets' cull boxes: a packet is skipped only when the ray misses its box grown by
-/// kCullMargin times the largest coordinate of the box and of the ray's origin. A watertight hit lies on the
-/// triangle up to the rounding of its corners' sheared coordinates relative to the origin (a few ulps of
-/// that size), and the slab distances round by a few ulps more: 2^-14 is some hundred times that, and still
-/// a hundredth of a triangle of the meshes here, so the culling loses nothing measurable.
-inline constexpr float kCullMargin = 1.0f / 16384.0f;
-
 /// Rows of W 32-bit lanes in one packet: corners for watertight, p0 and both edges for Moller-Trumbore,
 /// the plane data (its two axis numbers stored as floats) for the plane test; then the mesh's triangle
 /// indices, in the cache line that the last data row has already brought in.
 constexpr int packet_rows(TriangleTest test) { return test == TriangleTest::plane ? 14 : 10; }
 
-/// \brief Packets of `width` triangles (4 or 8) for one triangle test, in groups of up to `width` packets.
-/// A group is a header -- the cull boxes of its packets, rows lo.x, lo.y, lo.z, hi.x, hi.y, hi.z of width
-/// lanes -- followed by its packets, each rows x width floats. A leaf is a run of groups; a leaf whose count is
-/// not a multiple of the width repeats its last triangle (a repeated triangle cannot change a hit), and the
-/// header lanes of a last group's missing packets hold empty boxes. Leaves are addressed in units of
-/// kUnitFloats floats, which every header and packet size is a multiple of.
+/// \brief Packets of `width` triangles (4 or 8) for one triangle test. Packet k holds rows x width floats;
+/// a leaf whose count is not a multiple of the width repeats its last triangle (a repeated triangle cannot
+/// change a hit).
 class TrianglePackets {
 public:
-    static constexpr std::size_t kUnitFloats = 8;
-
     TrianglePackets() = default;
     TrianglePackets(TriangleTest test, int width) : m_test(test), m_rows(packet_rows(test)), m_width(width) {}
 
@@ -102,52 +88,26 @@ public:
     std::uint32_t packets_for(std::uint32_t count) const {
         return (count + static_cast<std::uint32_t>(m_width) - 1) / static_cast<std::uint32_t>(m_width);
     }
-    /// Units (kUnitFloats floats) of a leaf of `count` triangles: its groups' headers and packets.
-    std::size_t units_for(std::uint32_t count) const {
-        const std::size_t packets = packets_for(count);
-        const std::size_t groups =
-            (packets + static_cast<std::size_t>(m_width) - 1) / static_cast<std::size_t>(m_width);
-        return (groups * header_floats() + packets * packet_floats()) / kUnitFloats;
-    }
-    /// Room for `units` units, to be filled by fill_leaf (sized once: growing leaf by leaf moved the whole
-    /// array again and again).
-    void allocate(std::size_t units) { m_data.assign(units * kUnitFloats, 0.0f); }
-    /// Writes a leaf's triangles (mesh indices) as units_for(size) units from unit `first` (then the leaf's
-    /// offset for group()). Leaves in units of their own may be filled from several threads at once.
+    /// Room for `packets` packets, to be filled by fill_leaf (sized once: growing packet by packet moved
+    /// the whole array again and again).
+    void allocate(std::size_t packets) { m_data.assign(packets * packet_floats(), 0.0f); }
+    /// Writes a leaf's triangles (mesh indices) into packets_for(size) packets from packet `first`. Leaves
+    /// in packets of their own may be filled from several threads at once.
     void fill_leaf(const TriangleMesh& mesh, std::span<const std::uint32_t> triangles, std::uint32_t first) {
-        const auto width = static_cast<std::size_t>(m_width);
-        const std::size_t packets = packets_for(static_cast<std::uint32_t>(triangles.size()));
-        std::size_t header = static_cast<std::size_t>(first) * kUnitFloats;
-        for (std::size_t g = 0; g < packets; g += width) {
-            const std::size_t in_group = std::min(width, packets - g);
-            for (std::size_t lane = 0; lane < width; ++lane) {  // empty boxes for missing packets
-                for (std::size_t a = 0; a < 3; ++a) {
-                    m_data[header + a * width + lane] = kInfinity;
-                    m_data[header + (3 + a) * width + lane] = -kInfinity;
-                }
+        const std::size_t block = packet_floats();
+        std::size_t base = static_cast<std::size_t>(first) * block;
+        for (std::size_t k = 0; k < triangles.size(); k += static_cast<std::size_t>(m_width), base += block) {
+            for (std::size_t lane = 0; lane < static_cast<std::size_t>(m_width); ++lane) {
+                const std::uint32_t i = triangles[std::min(k + lane, triangles.size() - 1)];
+                fill_lane(mesh, i, &m_data[base], lane);
+                std::memcpy(&m_data[base + static_cast<std::size_t>(m_width * (m_rows - 1)) + lane], &i, sizeof(i));
             }
-            for (std::size_t k = 0; k < in_group; ++k) {
-                float* data = &m_data[header + header_floats() + k * packet_floats()];
-                AABB box;
-                const std::size_t first_triangle = (g + k) * width;
-                for (std::size_t lane = 0; lane < width; ++lane) {
-                    const std::uint32_t i = triangles[std::min(first_triangle + lane, triangles.size() - 1)];
-                    fill_lane(mesh, i, data, lane);
-                    std::memcpy(&data[width * static_cast<std::size_t>(m_rows - 1) + lane], &i, sizeof(i));
-                    for (int c = 0; c < 3; ++c) box.expand(mesh.corner(i, c));
-                }
-                write_cull_box(box, &m_data[header], k);
-            }
-            header += header_floats() + in_group * packet_floats();
         }
     }
 
     std::size_t bytes() const { return m_data.size() * sizeof(float); }
-    /// The first group of a leaf (the offset fill_leaf wrote it at): the header, then the packets.
-    const float* group(std::uint32_t offset) const { return m_data.data() + offset * kUnitFloats; }
-    std::size_t header_floats() const { return 6 * static_cast<std::size_t>(m_width); }
-    std::size_t packet_floats() const { return static_cast<std::size_t>(m_rows) * static_cast<std::size_t>(m_width); }
-    /// The mesh's triangle in a lane of packet p.
+    const float* packet(std::uint32_t k) const { return m_data.data() + static_cast<std::size_t>(k) * packet_floats(); }
+    /// The mesh's triangle in a lane of packet p (a pointer from packet()).
     std::uint32_t original(const float* p, int lane) const {
         std::uint32_t i;
         std::memcpy(&i, p + m_width * (m_rows - 1) + lane, sizeof(i));
@@ -155,20 +115,7 @@ public:
     }
 
 private:
-    // Lane k of a header: the packet's bounds widened by kCullMargin of their largest coordinate (the ray's
-    // share of the margin is added per ray, see PacketRay).
-    void write_cull_box(const AABB& box, float* header, std::size_t k) const {
-        const auto width = static_cast<std::size_t>(m_width);
-        const float largest = std::max(max_abs_component(box.lo), max_abs_component(box.hi));
-        const float margin = kCullMargin * largest;
-        for (std::size_t a = 0; a < 3; ++a) {
-            header[a * width + k] = box.lo[static_cast<int>(a)] - margin;
-            header[(3 + a) * width + k] = box.hi[static_cast<int>(a)] + margin;
-        }
-    }
-    static float max_abs_component(const Point3& p) {
-        return std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
-    }
+    std::size_t packet_floats() const { return static_cast<std::size_t>(m_rows) * static_cast<std::size_t>(m_width); }
 
     void fill_lane(const TriangleMesh& mesh, std::uint32_t i, float* block, std::size_t lane) const {
         const Point3 &p0 = mesh.corner(i, 0), &p1 = mesh.corner(i, 1), &p2 = mesh.corner(i, 2);
@@ -220,28 +167,10 @@ struct PacketRay<TriangleTest::watertight> {
     float ox = 0, oy = 0, oz = 0, sx = 0, sy = 0, sz = 0;  // origin and shear, already permuted to (kx, ky, kz)
     // The shear of WatertightRay, computed inline (it is per ray); the rare scalar fallback builds the
     // WatertightRay itself, and the tests compare both paths with the scalar test.
-    // The slab test of the packets' cull boxes, per axis: which header rows hold the near and the far planes
-    // (lo or hi by the direction's sign bit, as the walk decides it), the origin moved by the ray's share of
-    // the cull margin towards each plane's outside (so both distances err outwards), the inverse direction.
-    int near_row[3] = {0, 1, 2}, far_row[3] = {3, 4, 5};
-    float near_origin[3] = {0, 0, 0}, far_origin[3] = {0, 0, 0}, inv[3] = {1, 1, 1};
-
-    explicit PacketRay(const Ray& r) : PacketRay(r, BoxRay(r)) {}
-    /// The same with the walk's slab data for the ray, whose inverse direction and signs the cull reuses.
-    [[gnu::always_inline]] PacketRay(const Ray& r, const BoxRay& box) : ray(r), tmin(r.tmin) {
+    explicit PacketRay(const Ray& r) : ray(r), tmin(r.tmin) {
         const Vec3& d = r.direction;
         ok = is_finite(r.origin) && is_finite(d) && (d.x != 0.0f || d.y != 0.0f || d.z != 0.0f);
         if (!ok) return;
-        const float margin =
-            kCullMargin * std::max(std::abs(r.origin.x), std::max(std::abs(r.origin.y), std::abs(r.origin.z)));
-        for (int a = 0; a < 3; ++a) {
-            const bool negative = box.negative[a] != 0;
-            near_row[a] = negative ? 3 + a : a;
-            far_row[a] = negative ? a : 3 + a;
-            inv[a] = box.inv[a];
-            near_origin[a] = negative ? r.origin[a] - margin : r.origin[a] + margin;
-            far_origin[a] = negative ? r.origin[a] + margin : r.origin[a] - margin;
-        }
         kz = max_dimension(glm::abs(d));
         kx = kz == 2 ? 0 : kz + 1;
         ky = kx == 2 ? 0 : kx + 1;
@@ -260,7 +189,6 @@ template <>
 struct PacketRay<TriangleTest::moller> {
     const Ray& ray;
     explicit PacketRay(const Ray& r) : ray(r) {}
-    PacketRay(const Ray& r, const BoxRay&) : ray(r) {}
     bool valid() const { return true; }
 };
 
@@ -268,7 +196,6 @@ template <>
 struct PacketRay<TriangleTest::plane> {
     const Ray& ray;
     explicit PacketRay(const Ray& r) : ray(r) {}
-    PacketRay(const Ray& r, const BoxRay&) : ray(r) {}
     bool valid() const { return true; }
 };
 
@@ -413,67 +340,37 @@ template <TriangleTest Test, int W>
     }
 }
 
-/// The lanes of a group header (see TrianglePackets) whose cull box the ray's segment [tmin, tmax] meets: the
-/// watertight test hits no triangle of the others' packets there. A NaN distance (an origin on a plane the
-/// ray runs along) constrains nothing.
-template <int W>
-[[gnu::always_inline]] inline int boxes_hit(const PacketRay<TriangleTest::watertight>& r, const float* header,
-                                            float tmin, float tmax) {
-    using F = typename Lanes<W>::F;
-    // Written so that a NaN distance keeps the bound it is compared with (a comparison with NaN is false).
-    F enter = splat<W>(tmin), leave = splat<W>(tmax);
-    for (int a = 0; a < 3; ++a) {
-        const F inv = splat<W>(r.inv[a]);
-        const F t_near = (load_lanes<W>(header + W * r.near_row[a]) - splat<W>(r.near_origin[a])) * inv;
-        const F t_far = (load_lanes<W>(header + W * r.far_row[a]) - splat<W>(r.far_origin[a])) * inv;
-        enter = t_near > enter ? t_near : enter;
-        leave = t_far < leave ? t_far : leave;
-    }
-    return lane_bits(enter <= leave);
+/// Asks for every cache line of packets [first, first + count).
+[[gnu::always_inline]] inline void prefetch_packets(const TrianglePackets& packets, std::uint32_t first,
+                                                    std::uint32_t count) {
+    const char* begin = reinterpret_cast<const char*>(packets.packet(first));
+    const char* end = reinterpret_cast<const char*>(packets.packet(first + count));
+    for (const char* line = begin; line < end; line += 64) __builtin_prefetch(line);
 }
 
-[[gnu::always_inline]] inline void prefetch_range(const float* p, std::size_t floats) {
-    const auto begin = reinterpret_cast<std::uintptr_t>(p) & ~std::uintptr_t{63};
-    const auto end = reinterpret_cast<std::uintptr_t>(p + floats);
-    for (std::uintptr_t line = begin; line < end; line += 64) __builtin_prefetch(reinterpret_cast<const void*>(line));
-}
-
-/// Tests the `count` packets of the leaf at `first` (its offset, see TrianglePackets::fill_leaf), of width W,
-/// against (tmin, closest). Closest-hit: the nearest hit lowers closest and fills hit (mesh triangle index).
-/// AnyHit: true at the first hit. [from, to] is the leaf's interval (see kd_traverse): the watertight test
-/// skips packets whose cull box the ray meets only outside it.
-template <TriangleTest Test, bool AnyHit, int W>
+/// Tests packets [first, first + count) of width W against (tmin, closest). Closest-hit: the nearest hit
+/// lowers closest and fills hit (mesh triangle index). AnyHit: true at the first hit. Prefetch false: the
+/// caller has already asked for the leaf's lines (a packet of rays testing one leaf ray after ray).
+template <TriangleTest Test, bool AnyHit, int W, bool Prefetch = true>
 [[gnu::always_inline]] inline bool test_packets(const TrianglePackets& packets, const PacketRay<Test>& r,
-                                                std::uint32_t first, std::uint32_t count, float& closest, MeshHit& hit,
-                                                float from = -kInfinity, float to = kInfinity) {
-    const std::size_t packet_floats = packets.packet_floats();
-    const float* group = packets.group(first);
+                                                std::uint32_t first, std::uint32_t count, float& closest,
+                                                MeshHit& hit) {
+    // The leaf's packets are one contiguous run, usually not in cache: ask for all of its lines at once
+    // rather than one miss after another.
+    if constexpr (Prefetch) prefetch_packets(packets, first, count);
     bool any = false;
-    for (std::uint32_t done = 0; done < count;) {
-        const std::uint32_t in_group = std::min<std::uint32_t>(W, count - done);
-        const float* first_packet = group + 6 * W;
-        int todo = (1 << in_group) - 1;
-        if constexpr (Test == TriangleTest::watertight)
-            todo &= boxes_hit<W>(r, group, std::max(r.tmin, from), std::min(closest, to));
-        // The packets left are usually not in cache: ask for all their lines at once rather than one miss
-        // after another.
-        for (int m = todo; m != 0; m &= m - 1)
-            prefetch_range(first_packet + static_cast<std::size_t>(__builtin_ctz(m)) * packet_floats, packet_floats);
-        for (int m = todo; m != 0; m &= m - 1) {
-            const float* p = first_packet + static_cast<std::size_t>(__builtin_ctz(m)) * packet_floats;
-            typename Lanes<W>::F t{}, u{}, v{};
-            const int bits = test_packet<Test, W>(r, p, closest, t, u, v);
-            if (!bits) continue;
-            if constexpr (AnyHit) return true;
-            int best = -1;
-            for (int lane = 0; lane < W; ++lane)
-                if (((bits >> lane) & 1) && (best < 0 || t[lane] < t[best])) best = lane;
-            closest = t[best];
-            hit = MeshHit{t[best], packets.original(p, best), u[best], v[best]};
-            any = true;
-        }
-        group = first_packet + in_group * packet_floats;
-        done += in_group;
+    for (std::uint32_t k = first; k < first + count; ++k) {
+        typename Lanes<W>::F t{}, u{}, v{};
+        const float* p = packets.packet(k);
+        const int bits = test_packet<Test, W>(r, p, closest, t, u, v);
+        if (!bits) continue;
+        if constexpr (AnyHit) return true;
+        int best = -1;
+        for (int lane = 0; lane < W; ++lane)
+            if (((bits >> lane) & 1) && (best < 0 || t[lane] < t[best])) best = lane;
+        closest = t[best];
+        hit = MeshHit{t[best], packets.original(p, best), u[best], v[best]};
+        any = true;
     }
     return any;
 }
@@ -484,9 +381,8 @@ template <TriangleTest Test, bool AnyHit, int W>
 template <TriangleTest Test, bool AnyHit>
 [[gnu::target("avx2"), gnu::noinline]] bool test_packets_avx2(const TrianglePackets& packets, const PacketRay<Test>& r,
                                                               std::uint32_t first, std::uint32_t count, float& closest,
-                                                              MeshHit& hit, float from = -kInfinity,
-                                                              float to = kInfinity) {
-    return test_packets<Test, AnyHit, 8>(packets, r, first, count, closest, hit, from, to);
+                                                              MeshHit& hit) {
+    return test_packets<Test, AnyHit, 8>(packets, r, first, count, closest, hit);
 }
 #endif
 

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <type_traits>
 
 namespace rtlab {
 
@@ -31,16 +30,6 @@ namespace rtlab {
 inline constexpr float kKdIntervalMargin = 8.0f * gamma_bound(3);
 
 namespace detail {
-
-/// Calls test_leaf(leaf, closest, from, to) where the leaf test takes the interval, else test_leaf(leaf, closest).
-template <class LeafTest>
-[[gnu::always_inline]] inline bool call_leaf_test(LeafTest& test_leaf, const KdNode& leaf, float& closest, float from,
-                                                  float to) {
-    if constexpr (std::is_invocable_r_v<bool, LeafTest&, const KdNode&, float&, float, float>)
-        return test_leaf(leaf, closest, from, to);
-    else
-        return test_leaf(leaf, closest);
-}
 
 /// The walk of kd_traverse for rays whose direction has the sign bits of Octant (bit a set for a negative
 /// component a, -0 included), over [tmin, tmax] already clipped to the root box.
@@ -147,7 +136,7 @@ bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, floa
             index = near;
             continue;
         }
-        if (node.primitive_count() != 0 && call_leaf_test(test_leaf, node, closest, tmin - overlap, tmax)) {
+        if (node.primitive_count() != 0 && test_leaf(node, closest)) {
             hit = true;
             if constexpr (AnyHit) return true;
             closest_reach = closest + overlap;
@@ -163,9 +152,6 @@ bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, floa
 /// Walks the tree front to back along the ray. `test_leaf(leaf, closest)` tests the primitives of a
 /// non-empty leaf node against the ray restricted to (ray.tmin, closest), returns true on a hit and, for
 /// closest-hit queries, lowers `closest` to the hit's t. With AnyHit the walk stops at the first hit.
-/// A leaf test may take two more floats, `test_leaf(leaf, closest, from, to)`: an interval of t, widened by
-/// the walk's margins, that holds every hit inside the leaf's cell. A primitive reaching out of the cell
-/// lies in the leaves it reaches into too, so a test may skip what lies outside [from, to].
 ///
 /// Exact where naive traversals are not: the near child is chosen by the sign bit of the direction, so a
 /// component of +0 or -0 (an infinite inverse) visits the side holding the origin; a ray lying in a split
@@ -178,14 +164,9 @@ bool kd_walk(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, floa
 /// 1 thread: 1-6% faster than one walk for all directions).
 template <bool AnyHit, class LeafTest>
 bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
-    return kd_traverse<AnyHit>(tree, ray, BoxRay(ray), test_leaf);
-}
-
-/// The same with the ray's slab data made by the caller (BoxRay(ray)), for leaf tests that use it too.
-template <bool AnyHit, class LeafTest>
-bool kd_traverse(const KdTreeData& tree, const Ray& ray, const BoxRay& box_ray, LeafTest&& test_leaf) {
     if (tree.nodes.empty() || tree.bounds.is_empty() || !is_finite(ray.origin) || !is_finite(ray.direction))
         return false;
+    const BoxRay box_ray(ray);
     float tmin, tmax;
     if (!box_ray.clip(tree.bounds, ray.tmax, tmin, tmax)) return false;
     const unsigned octant = box_ray.negative[0] | box_ray.negative[1] << 1 | box_ray.negative[2] << 2;
