@@ -34,6 +34,22 @@ union Deferred {
     T value;
 };
 
+/// lane_bits for the walk: 8 lanes in one vmovmskps rather than two halves (the generic lane_bits cannot
+/// use an AVX intrinsic: it would not inline into these target-independent templates; inline assembly does,
+/// and the walk of 8 lanes runs only inside trace_packet_avx2). 2.4% fewer instructions in the packet walks
+/// (bunny, callgrind).
+template <int W>
+[[gnu::always_inline]] inline int walk_lane_bits(const typename Lanes<W>::I& mask) {
+#if RTLAB_KD_HAVE_AVX2_LEAVES
+    if constexpr (W == 8) {
+        int bits;
+        asm("vmovmskps %1, %0" : "=r"(bits) : "x"(mask));
+        return bits;
+    }
+#endif
+    return lane_bits(mask);
+}
+
 /// One packet's walk over the lanes `alive` (one octant); leaves tested per lane by test_packets of width
 /// LeafW. Closest-hit: hits[lane] and the lane's bit in the result on a hit; any-hit: the bit alone.
 template <TriangleTest Test, bool AnyHit, int W, int LeafW>
@@ -117,8 +133,8 @@ private:
                 const F t_plane = (splat<W>(node.split()) - m_origin[axis]) * m_inv[axis];
                 const F t_near_end = t_plane + m_overlap;
                 const std::uint32_t near = node.children() | side;
-                const int want_near = (empty & (1u << side)) != 0 ? 0 : active & ~lane_bits(t_near_end < tmin);
-                const int want_far = (empty & (2u >> side)) != 0 ? 0 : active & ~lane_bits(t_plane > tmax);
+                const int want_near = (empty & (1u << side)) != 0 ? 0 : active & ~walk_lane_bits<W>(t_near_end < tmin);
+                const int want_far = (empty & (2u >> side)) != 0 ? 0 : active & ~walk_lane_bits<W>(t_plane > tmax);
                 if (want_near != 0) {
                     if (want_far != 0) {
                         *top = Entry{t_plane > tmin ? t_plane : tmin, tmax, near ^ 1u, want_far, want_far & ~want_near};
@@ -164,9 +180,9 @@ private:
                 if constexpr (!AnyHit) {
                     const int checked = lanes & ~top->direct;
                     if (checked != 0) {
-                        const int past = checked & lane_bits(m_closest_reach < top->tmin);
+                        const int past = checked & walk_lane_bits<W>(m_closest_reach < top->tmin);
                         if (past != 0) {
-                            m_alive &= ~(past & lane_bits(m_closest_end < top->tmin));
+                            m_alive &= ~(past & walk_lane_bits<W>(m_closest_end < top->tmin));
                             lanes &= ~past;
                         }
                     }
@@ -234,7 +250,7 @@ template <TriangleTest Test, bool AnyHit, int W, int LeafW>
     const I finite = (abs_lanes<W>(s.origin[0]) < inf) & (abs_lanes<W>(s.origin[1]) < inf) &
                      (abs_lanes<W>(s.origin[2]) < inf) & (abs_lanes<W>(d[0]) < inf) & (abs_lanes<W>(d[1]) < inf) &
                      (abs_lanes<W>(d[2]) < inf);
-    int valid = lane_bits(finite) & ((1 << n) - 1);
+    int valid = walk_lane_bits<W>(finite) & ((1 << n) - 1);
     if (tree.nodes.empty() || tree.bounds.is_empty()) valid = 0;
     // BoxRay::clip against the root box.
     F t0 = ray_tmin, t1 = enlarge_lanes<W>(s.ray_tmax);
@@ -242,7 +258,7 @@ template <TriangleTest Test, bool AnyHit, int W, int LeafW>
     for (int a = 0; a < 3; ++a) {
         s.inv[a] = splat<W>(1.0f) / d[a];
         const I negative = reinterpret_cast<I>(s.inv[a]) < 0;  // the sign bit, -0 and -inf included
-        octant_bits[a] = static_cast<unsigned>(lane_bits(negative));
+        octant_bits[a] = static_cast<unsigned>(walk_lane_bits<W>(negative));
         const F lo = splat<W>(tree.bounds.lo[a]), hi = splat<W>(tree.bounds.hi[a]);
         const F near_plane = negative ? hi : lo, far_plane = negative ? lo : hi;
         const F near_t = (near_plane - s.origin[a]) * s.inv[a];
@@ -250,7 +266,7 @@ template <TriangleTest Test, bool AnyHit, int W, int LeafW>
         t0 = near_t > t0 ? near_t : t0;
         t1 = far_t < t1 ? far_t : t1;
     }
-    valid &= lane_bits(t0 <= t1);
+    valid &= walk_lane_bits<W>(t0 <= t1);
     // The leaf tests' per-ray constants, only for rays that reach the root box (most camera rays of a view
     // with the mesh in the middle do not: 10% fewer instructions in the packet walks of rtlab-accel --packets,
     // bunny, callgrind); a ray the single trace answers as a miss for its leaf test (an
