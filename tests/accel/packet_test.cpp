@@ -238,17 +238,7 @@ TEST_CASE("kd packets answer as single rays for flat and stacked coplanar grids 
 TEST_CASE("kd packets answer as single rays at corner vertices of isolated squares", "[accel]") {
     const int n = 64;
     const float spacing = 1.0f / 128.0f;
-    TriangleMesh m;
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i)
-            m.positions.emplace_back(static_cast<float>(i - n / 2) * spacing, static_cast<float>(j - n / 2) * spacing,
-                                     0.0f);
-    auto at = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
-    for (int j = 0; j < n; j += 2)
-        for (int i = 0; i < n; i += 2) {
-            m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
+    const TriangleMesh m = test::isolated_squares(n, spacing);
     Rng rng(5);
     std::vector<Ray> rays;
     auto corner = [&] {

@@ -291,17 +291,7 @@ TEST_CASE("kd-sah-naive on a smaller grid and icosphere hit at vertices and edge
 // 27,166 hits with kd-sah on this set.
 TEST_CASE("isolated squares hit exactly at their corner vertices agree with brute force", "[accel]") {
     const int n = 64;
-    TriangleMesh m;
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i)
-            m.positions.emplace_back(static_cast<float>(i - n / 2) * kSpacing, static_cast<float>(j - n / 2) * kSpacing,
-                                     0.0f);
-    auto at = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
-    for (int j = 0; j < n; j += 2)
-        for (int i = 0; i < n; i += 2) {
-            m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
+    const TriangleMesh m = test::isolated_squares(n, kSpacing);
     Rng rng(5);
     std::vector<Ray> rays;
     for (int r = 0; r < 40000 / kRayDivisor; ++r) {

@@ -126,6 +126,23 @@ inline TriangleMesh grid_box(int n) {
     return m;
 }
 
+/// Squares of side `spacing` on every other cell of an n x n grid in the plane z = 0, centred on the origin, each
+/// two triangles: every vertex belongs to one square only, so no neighbour catches a ray lost at a corner.
+inline TriangleMesh isolated_squares(int n, float spacing) {
+    TriangleMesh m;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+            m.positions.emplace_back(static_cast<float>(i - n / 2) * spacing, static_cast<float>(j - n / 2) * spacing,
+                                     0.0f);
+    auto at = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+    for (int j = 0; j < n; j += 2)
+        for (int i = 0; i < n; i += 2) {
+            m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    return m;
+}
+
 /// Unit cubes (side `scale`) in the cells of a 4 x 4 x 4 lattice whose coordinates add up to an even number,
 /// from `offset`, each face two triangles: neighbours touch only at edges, every face lies in a lattice plane
 /// shared by the faces of other cubes, and a kd-tree splits on those planes.
