@@ -20,7 +20,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
-from cycles_images import luminance, read_pfm  # noqa: E402
+from cycles_images import luminance, read_pfm, to_png  # noqa: E402
 
 
 def read_scene(path):
@@ -107,18 +107,6 @@ def compare(scene_path, rtlab_path, cycles_path):
             ratio = a[m].mean(axis=0) / b[m].mean(axis=0)
             words += [f"{name}_pixels={int(m.sum())}", f"{name}_ratio={':'.join(f'{x:.4f}' for x in ratio)}"]
     print(" ".join(words))
-
-
-def to_png(src, dst, scale, exposure):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    x = np.clip(read_pfm(src) * 2.0**exposure, 0.0, 1.0)
-    srgb = np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.power(x, 1 / 2.4) - 0.055)
-    big = np.repeat(np.repeat(srgb, scale, axis=0), scale, axis=1)
-    plt.imsave(dst, (big * 255 + 0.5).astype(np.uint8))
 
 
 def option(argv, name, default):

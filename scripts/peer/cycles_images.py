@@ -41,15 +41,17 @@ def luminance(image):
     return image @ np.array([0.2126, 0.7152, 0.0722])
 
 
-def to_png(src, dst):
+def to_png(src, dst, scale=1, exposure=0.0):
+    """PFM to an sRGB PNG, brightened by 2^exposure and each pixel repeated scale x scale times."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    x = np.clip(read_pfm(src), 0.0, 1.0)
+    x = np.clip(read_pfm(src) * 2.0**exposure, 0.0, 1.0)
     srgb = np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.power(x, 1 / 2.4) - 0.055)
-    plt.imsave(dst, (srgb * 255 + 0.5).astype(np.uint8))
+    big = np.repeat(np.repeat(srgb, scale, axis=0), scale, axis=1)
+    plt.imsave(dst, (big * 255 + 0.5).astype(np.uint8))
 
 
 def block_means(image, n):
