@@ -72,24 +72,10 @@ public:
         // One walk per octant, as kd_traverse: the near side of each axis a constant, and branches of its
         // own for the predictor (bunny and dragon, 1 thread, same-run ratios to rtcIntersect8 over two runs
         // each: shadow rays 0.47-0.84 -> 0.66-0.89 any-hit, primary any-hit 0.75-1.07 -> 0.82-1.30).
-        switch (octant) {
-            case 0:
-                return walk.template walk<0>(tree, packets, rays, hits);
-            case 1:
-                return walk.template walk<1>(tree, packets, rays, hits);
-            case 2:
-                return walk.template walk<2>(tree, packets, rays, hits);
-            case 3:
-                return walk.template walk<3>(tree, packets, rays, hits);
-            case 4:
-                return walk.template walk<4>(tree, packets, rays, hits);
-            case 5:
-                return walk.template walk<5>(tree, packets, rays, hits);
-            case 6:
-                return walk.template walk<6>(tree, packets, rays, hits);
-            default:
-                return walk.template walk<7>(tree, packets, rays, hits);
-        }
+        return detail::with_octant(
+            octant, [&]<unsigned Octant>() __attribute__((always_inline)) {
+                return walk.template walk<Octant>(tree, packets, rays, hits);
+            });
     }
 
 private:

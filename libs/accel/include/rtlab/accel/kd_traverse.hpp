@@ -31,6 +31,31 @@ inline constexpr float kKdIntervalMargin = 8.0f * gamma_bound(3);
 
 namespace detail {
 
+/// f.template operator()<Octant>() with the octant (0..7, bit a set for a negative direction component a)
+/// as a constant: the kd walks are compiled once per octant. f is inlined where it is a lambda marked
+/// always_inline (the packet walk's, which must take the AVX2 target of its caller).
+template <class F>
+[[gnu::always_inline]] inline decltype(auto) with_octant(unsigned octant, F&& f) {
+    switch (octant) {
+        case 0:
+            return f.template operator()<0u>();
+        case 1:
+            return f.template operator()<1u>();
+        case 2:
+            return f.template operator()<2u>();
+        case 3:
+            return f.template operator()<3u>();
+        case 4:
+            return f.template operator()<4u>();
+        case 5:
+            return f.template operator()<5u>();
+        case 6:
+            return f.template operator()<6u>();
+        default:
+            return f.template operator()<7u>();
+    }
+}
+
 /// The walk of kd_traverse for rays whose direction has the sign bits of Octant (bit a set for a negative
 /// component a, -0 included), over [tmin, tmax] already clipped to the root box.
 template <bool AnyHit, unsigned Octant, class LeafTest>
@@ -170,27 +195,9 @@ bool kd_traverse(const KdTreeData& tree, const Ray& ray, LeafTest&& test_leaf) {
     float tmin, tmax;
     if (!box_ray.clip(tree.bounds, ray.tmax, tmin, tmax)) return false;
     const unsigned octant = box_ray.negative[0] | box_ray.negative[1] << 1 | box_ray.negative[2] << 2;
-    auto walk = [&]<unsigned Octant>() {
+    return detail::with_octant(octant, [&]<unsigned Octant>() {
         return detail::kd_walk<AnyHit, Octant>(tree, ray, box_ray, tmin, tmax, test_leaf);
-    };
-    switch (octant) {
-        case 0:
-            return walk.template operator()<0>();
-        case 1:
-            return walk.template operator()<1>();
-        case 2:
-            return walk.template operator()<2>();
-        case 3:
-            return walk.template operator()<3>();
-        case 4:
-            return walk.template operator()<4>();
-        case 5:
-            return walk.template operator()<5>();
-        case 6:
-            return walk.template operator()<6>();
-        default:
-            return walk.template operator()<7>();
-    }
+    });
 }
 
 }  // namespace rtlab
