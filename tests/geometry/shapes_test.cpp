@@ -279,6 +279,58 @@ TEST_CASE("instances move, scale and keep normals perpendicular", "[shapes]") {
     CHECK_THROWS_AS(Instance(unit, Mat4(0.0f)), Error);
 }
 
+TEST_CASE("instances skip rays clear of their world box without changing a single answer", "[shapes]") {
+    // The hard case: a box shape fills its own bounds, so rays grazing its faces and edges are the ones a
+    // world-space bound too tight would lose. Rotations, non-uniform scales and far translations (where the
+    // transforms' rounding is largest), rays aimed at corners, edges and faces with tiny offsets either way.
+    Rng rng(2026, 24);
+    const AABB inner{{-1.0f, -0.5f, -0.8f}, {0.7f, 1.1f, 0.9f}};
+    const auto box = std::make_shared<Box>(inner);
+    const auto sphere = std::make_shared<Sphere>(Point3(0.2f, -0.1f, 0.3f), 0.6f);
+    int hits = 0, misses_seen = 0;
+    for (int k = 0; k < 200; ++k) {
+        const float far = k % 3 == 0 ? 0.0f : log_uniform(rng, -1.0f, k % 3 == 1 ? 2.0f : 5.0f);
+        Mat4 m = glm::translate(Mat4(1.0f), random_direction(rng) * far);
+        m = glm::rotate(m, 6.2831853f * rng.uniform(), random_direction(rng));
+        m = glm::scale(
+            m, Vec3(log_uniform(rng, -2.0f, 2.0f), log_uniform(rng, -2.0f, 2.0f), log_uniform(rng, -2.0f, 2.0f)));
+        const Mat4 inverse = glm::inverse(m);  // what the instance itself computes
+        for (const std::shared_ptr<const Shape>& shape :
+             {std::shared_ptr<const Shape>(box), std::shared_ptr<const Shape>(sphere)}) {
+            const Instance instance(shape, m);
+            for (int i = 0; i < 300; ++i) {
+                // A target near the inner bounds' surface: a corner, an edge or a face point, nudged by a few
+                // float steps of its size in either direction.
+                Point3 target;
+                for (int a = 0; a < 3; ++a) {
+                    const float pick = rng.uniform();
+                    target[a] = pick < 0.35f  ? inner.lo[a]
+                                : pick < 0.7f ? inner.hi[a]
+                                              : inner.lo[a] + rng.uniform() * (inner.hi[a] - inner.lo[a]);
+                    target[a] += (2.0f * rng.uniform() - 1.0f) * 1e-6f * static_cast<float>(rng.uniform_u32(64));
+                }
+                const Point3 world_target = Point3(m * Vec4(target, 1.0f));
+                const float scale = glm::length(Vec3(m * Vec4(inner.hi - inner.lo, 0.0f))) + 1e-3f;
+                const Point3 origin = world_target + random_direction(rng) * (scale * log_uniform(rng, -1.0f, 3.0f));
+                const Vec3 dir = (world_target - origin) * log_uniform(rng, -3.0f, 3.0f);
+                const float tmax = rng.uniform() < 0.8f ? kInfinity : log_uniform(rng, -3.0f, 3.0f);
+                const Ray ray{origin, dir, 0.0f, tmax};
+                const Ray local{Point3(inverse * Vec4(ray.origin, 1.0f)), Vec3(inverse * Vec4(ray.direction, 0.0f)),
+                                ray.tmin, ray.tmax};
+                SurfaceHit expected, got;
+                const bool want = shape->intersect(local, expected);
+                INFO("transform " << k << " ray " << i);
+                REQUIRE(instance.intersect(ray, got) == want);
+                REQUIRE(instance.occluded(ray) == shape->occluded(local));
+                if (want) REQUIRE(std::bit_cast<std::uint32_t>(got.t) == std::bit_cast<std::uint32_t>(expected.t));
+                (want ? hits : misses_seen) += 1;
+            }
+        }
+    }
+    CHECK(hits > 15000);
+    CHECK(misses_seen > 15000);
+}
+
 TEST_CASE("two-step closest hits give the one-step record bit for bit whether deferred or not", "[shapes]") {
     // Sphere defers its record (its own two steps); Box and Quad take the defaults (intersect twice).
     const Sphere sphere({0.3f, -0.2f, 0.1f}, 1.3f);
