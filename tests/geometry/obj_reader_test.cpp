@@ -198,3 +198,43 @@ TEST_CASE("OBJ face corners in every legal form still load", "[obj]") {
     CHECK(m.corner(3, 2) == Point3(0, 1, 0));  // -2 of four vertices
     CHECK(m.corner(4, 2) == Point3(1, 1, 0));
 }
+
+TEST_CASE("OBJ numbers the quick line check settles alone agree with the full check", "[obj]") {
+    // Plain decimals and unsigned in-range corners skip from_chars; everything else (exponents, a bare point, ten
+    // digits, leading zeros, empty slots) goes the general way, and both must judge alike.
+    const auto path = write_file("quick.obj",
+                                 "v 1. .5 +.5\n"
+                                 "v -0 1e-5 +2.25\n"
+                                 "v 0000000000000000000000000000000000000000001.5 0 1\n"
+                                 "vt 0 0\nvn 0 0 1\n"
+                                 "f 01 2 0000000003\n"
+                                 "f 1/1/1 2/1/1 3/1/1\n"
+                                 "f 1//1 2//1 3//01\n");
+    const TriangleMesh m = load_obj(path);
+    REQUIRE(m.triangle_count() == 3);
+    CHECK(m.corner(0, 0) == Point3(1.0f, 0.5f, 0.5f));
+    CHECK(m.corner(0, 1) == Point3(-0.0f, 1e-5f, 2.25f));
+    CHECK(m.corner(0, 2) == Point3(1.5f, 0.0f, 1.0f));
+
+    struct Bad {
+        const char* name;
+        std::string content;
+        const char* error;
+    };
+    const Bad cases[] = {
+        {"quickhuge.obj", "v 1e400 0 0\n" + kTriangle + "f 2 3 4\n", "line 1: vertex coordinate 1"},
+        {"quickhex.obj", "v 0x1 0 0\n" + kTriangle + "f 2 3 4\n", "line 1: vertex coordinate 1"},
+        {"quickpoint.obj", "v 0 . 0\n" + kTriangle + "f 2 3 4\n", "line 1: vertex coordinate 2"},
+        {"quicksign.obj", "v 0 0 -\n" + kTriangle + "f 2 3 4\n", "line 1: vertex coordinate 3"},
+        {"quickemptyvn.obj", kTriangleUvNormal + "f 1/1/ 2/1/1 3/1/1\n", "line 8: face corner '1/1/' is malformed"},
+        {"quickzero.obj", kTriangleUvNormal + "f 1/1/1 2/0/1 3/1/1\n", "line 8: texture coordinate index 0"},
+        {"quicknormal.obj", kTriangleUvNormal + "f 1//1 2//2 3//1\n",
+         "line 8: normal index 2 out of range (1 normals)"},
+        {"quickten.obj", kTriangle + "f 1 2 0000000004\n", "line 4: vertex index 0000000004 out of range"},
+    };
+    for (const auto& c : cases) {
+        INFO(c.name);
+        const auto bad = write_file(c.name, c.content);
+        CHECK_THROWS_WITH(load_obj(bad), Contains(c.name) && Contains(c.error));
+    }
+}

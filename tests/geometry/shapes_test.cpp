@@ -12,7 +12,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 using namespace rtlab;
 
@@ -82,6 +84,76 @@ TEST_CASE("sphere: huge and tiny scales and far offsets keep precision", "[shape
             if (offset == 0.0f) CHECK(s.occluded(Ray{origin, target - origin}));
         }
     }
+}
+
+namespace {
+
+// Sphere::intersect_distance() without its quick test for clear misses: the general path it must agree with.
+bool general_sphere_distance(const Sphere& s, const Ray& ray, float& t) {
+    const Sphere::RayTerms terms = s.ray_terms(ray);
+    const float a = terms.a, b = terms.b, c = terms.oo - s.radius() * s.radius();
+    if (b > 0.0f && c > 0.0f && ray.tmin >= 0.0f) return false;
+    const float perp = glm::length(terms.oc - (b / a) * ray.direction);
+    const float disc = a * (s.radius() - perp) * (s.radius() + perp);
+    float t0, t1;
+    if (!geometry::stable_roots(a, b, c, disc, t0, t1)) return false;
+    if (t0 > ray.tmin && t0 < ray.tmax)
+        t = t0;
+    else if (t1 > ray.tmin && t1 < ray.tmax)
+        t = t1;
+    else
+        return false;
+    return true;
+}
+
+float log_uniform(Rng& rng, float lo_exp, float hi_exp) {
+    return std::pow(10.0f, lo_exp + (hi_exp - lo_exp) * rng.uniform());
+}
+
+Vec3 random_direction(Rng& rng) {
+    for (;;) {
+        const Vec3 v(2.0f * rng.uniform() - 1.0f, 2.0f * rng.uniform() - 1.0f, 2.0f * rng.uniform() - 1.0f);
+        const float l = glm::length(v);
+        if (l > 0.1f && l <= 1.0f) return v / l;
+    }
+}
+
+}  // namespace
+
+TEST_CASE("sphere: the quick miss test agrees bit for bit with the general path", "[shapes]") {
+    // Grazing rays are the hard case: lines passing the centre at r (1 + k 2^-24) for small k, at every scale,
+    // with directions of any length, from near and far, besides plain random rays.
+    Rng rng(2026, 11);
+    int hits = 0, misses_seen = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const float r = log_uniform(rng, -5.0f, 4.0f);
+        const Point3 c = random_direction(rng) * log_uniform(rng, -3.0f, 6.0f) * rng.uniform();
+        const Sphere s(c, r);
+        const Vec3 dir = random_direction(rng);
+        const float len = log_uniform(rng, -5.0f, 5.0f);
+        Point3 origin;
+        if (i % 2 == 0) {
+            // A line whose closest point to the centre lies at r (1 + k u) from it.
+            Vec3 side = glm::cross(dir, random_direction(rng));
+            side = glm::normalize(side);
+            const float k = static_cast<float>(static_cast<int>(rng.uniform_u32(401)) - 200);
+            const Point3 closest = c + side * (r * (1.0f + k * 0x1p-24f));
+            origin = closest - dir * (r * log_uniform(rng, -2.0f, 4.0f) * (rng.uniform() < 0.9f ? 1.0f : -1.0f));
+        } else {
+            origin = c + random_direction(rng) * (r * log_uniform(rng, -1.0f, 4.0f));
+        }
+        const Ray ray{origin, dir * len, rng.uniform() < 0.8f ? 0.0f : -r, kInfinity};
+        float t_quick = -1.0f, t_general = -1.0f;
+        const bool quick = s.intersect_distance(ray, t_quick);
+        const bool general = general_sphere_distance(s, ray, t_general);
+        INFO("ray " << i);
+        REQUIRE(quick == general);
+        if (quick) REQUIRE(std::bit_cast<std::uint32_t>(t_quick) == std::bit_cast<std::uint32_t>(t_general));
+        (quick ? hits : misses_seen) += 1;
+    }
+    // Both outcomes are well represented.
+    CHECK(hits > 20000);
+    CHECK(misses_seen > 20000);
 }
 
 TEST_CASE("sphere uv puts the north pole at v = 1 and is continuous in u", "[shapes]") {
@@ -205,6 +277,58 @@ TEST_CASE("instances move, scale and keep normals perpendicular", "[shapes]") {
     const Vec3 expected = glm::normalize(Vec3(1.5f / 9.0f, std::sqrt(1.0f - 0.25f), 0));
     CHECK(glm::length(h.geometric_normal - expected) < 1e-4f);
     CHECK_THROWS_AS(Instance(unit, Mat4(0.0f)), Error);
+}
+
+TEST_CASE("instances skip rays clear of their world box without changing a single answer", "[shapes]") {
+    // The hard case: a box shape fills its own bounds, so rays grazing its faces and edges are the ones a
+    // world-space bound too tight would lose. Rotations, non-uniform scales and far translations (where the
+    // transforms' rounding is largest), rays aimed at corners, edges and faces with tiny offsets either way.
+    Rng rng(2026, 24);
+    const AABB inner{{-1.0f, -0.5f, -0.8f}, {0.7f, 1.1f, 0.9f}};
+    const auto box = std::make_shared<Box>(inner);
+    const auto sphere = std::make_shared<Sphere>(Point3(0.2f, -0.1f, 0.3f), 0.6f);
+    int hits = 0, misses_seen = 0;
+    for (int k = 0; k < 200; ++k) {
+        const float far = k % 3 == 0 ? 0.0f : log_uniform(rng, -1.0f, k % 3 == 1 ? 2.0f : 5.0f);
+        Mat4 m = glm::translate(Mat4(1.0f), random_direction(rng) * far);
+        m = glm::rotate(m, 6.2831853f * rng.uniform(), random_direction(rng));
+        m = glm::scale(
+            m, Vec3(log_uniform(rng, -2.0f, 2.0f), log_uniform(rng, -2.0f, 2.0f), log_uniform(rng, -2.0f, 2.0f)));
+        const Mat4 inverse = glm::inverse(m);  // what the instance itself computes
+        for (const std::shared_ptr<const Shape>& shape :
+             {std::shared_ptr<const Shape>(box), std::shared_ptr<const Shape>(sphere)}) {
+            const Instance instance(shape, m);
+            for (int i = 0; i < 300; ++i) {
+                // A target near the inner bounds' surface: a corner, an edge or a face point, nudged by a few
+                // float steps of its size in either direction.
+                Point3 target;
+                for (int a = 0; a < 3; ++a) {
+                    const float pick = rng.uniform();
+                    target[a] = pick < 0.35f  ? inner.lo[a]
+                                : pick < 0.7f ? inner.hi[a]
+                                              : inner.lo[a] + rng.uniform() * (inner.hi[a] - inner.lo[a]);
+                    target[a] += (2.0f * rng.uniform() - 1.0f) * 1e-6f * static_cast<float>(rng.uniform_u32(64));
+                }
+                const Point3 world_target = Point3(m * Vec4(target, 1.0f));
+                const float scale = glm::length(Vec3(m * Vec4(inner.hi - inner.lo, 0.0f))) + 1e-3f;
+                const Point3 origin = world_target + random_direction(rng) * (scale * log_uniform(rng, -1.0f, 3.0f));
+                const Vec3 dir = (world_target - origin) * log_uniform(rng, -3.0f, 3.0f);
+                const float tmax = rng.uniform() < 0.8f ? kInfinity : log_uniform(rng, -3.0f, 3.0f);
+                const Ray ray{origin, dir, 0.0f, tmax};
+                const Ray local{Point3(inverse * Vec4(ray.origin, 1.0f)), Vec3(inverse * Vec4(ray.direction, 0.0f)),
+                                ray.tmin, ray.tmax};
+                SurfaceHit expected, got;
+                const bool want = shape->intersect(local, expected);
+                INFO("transform " << k << " ray " << i);
+                REQUIRE(instance.intersect(ray, got) == want);
+                REQUIRE(instance.occluded(ray) == shape->occluded(local));
+                if (want) REQUIRE(std::bit_cast<std::uint32_t>(got.t) == std::bit_cast<std::uint32_t>(expected.t));
+                (want ? hits : misses_seen) += 1;
+            }
+        }
+    }
+    CHECK(hits > 15000);
+    CHECK(misses_seen > 15000);
 }
 
 TEST_CASE("two-step closest hits give the one-step record bit for bit whether deferred or not", "[shapes]") {

@@ -123,8 +123,12 @@ TEST_CASE("a recorded object's queries are the rays its mesh receives in its own
         expected_shadow.push_back(local);
         world_blocked.push_back(blocked ? 1 : 0);
     }
-    REQUIRE(recorder->closest_counts().answered == n);
-    REQUIRE(recorder->shadow_counts().answered == n);
+    // The instance passes on only the rays near its world box (Instance::misses_bounds()): every overlapping one,
+    // not necessarily the others.
+    REQUIRE(recorder->closest_counts().answered <= n);
+    REQUIRE(recorder->shadow_counts().answered <= n);
+    REQUIRE(recorder->closest_counts().answered >= recorder->closest_counts().overlapping);
+    REQUIRE(recorder->shadow_counts().answered >= recorder->shadow_counts().overlapping);
     REQUIRE(recorder->closest_rays().size() == expected_closest.size());
     REQUIRE(recorder->shadow_rays().size() == expected_shadow.size());
     CHECK(expected_closest.size() > 500);

@@ -1,7 +1,10 @@
+#include <rtlab/core/box_ray.hpp>
 #include <rtlab/core/error.hpp>
 #include <rtlab/geometry/instance.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rtlab {
 
@@ -22,6 +25,39 @@ Instance::Instance(std::shared_ptr<const Shape> shape, const Mat4& object_to_wor
     m_abs_translation = glm::abs(Vec3(m_to_world[3]));
     m_abs_inverse_translation = glm::abs(Vec3(m_to_object[3]));
     m_abs_residual_translation = Vec3(glm::abs(glm::dvec3(residual[3])));
+
+    // The guard (misses_bounds()). A hit at t of the object-space ray o' + t d' is a point q of the inner shape's
+    // bounds; the world ray's point o + t d lies off M q by the rounding of M^-1 o and M^-1 d and the inverse's
+    // residual carried through M: at most about kappa (8 u + |R|) (|o| + t |d|) in max norm (kappa the product of
+    // the two linear parts' norms), where t |d| <= |o| + |M q|. Taken four times over, the world box corners'
+    // own rounding and the translation's included.
+    const auto row_sum_max = [](const Mat3& abs_m) {
+        float best = 0.0f;
+        for (int r = 0; r < 3; ++r) best = std::max(best, abs_m[0][r] + abs_m[1][r] + abs_m[2][r]);
+        return best;
+    };
+    const auto max_of = [](const Vec3& v) { return std::max({v.x, v.y, v.z}); };
+    const float u = std::numeric_limits<float>::epsilon() * 0.5f;
+    const float linear = row_sum_max(m_abs_linear);
+    const float kappa = std::max(1.0f, linear * row_sum_max(m_abs_inverse_linear));
+    m_guard_relative = 4.0f * kappa * (16.0f * u + row_sum_max(m_abs_residual_linear));
+    const AABB inner = m_shape->bounds();
+    m_world_bounds = bounds();
+    const float extent = std::max(max_of(glm::abs(m_world_bounds.lo)), max_of(glm::abs(m_world_bounds.hi)));
+    m_guard_absolute = m_guard_relative * (extent + max_of(m_abs_translation)) +
+                       4.0f * linear * max_of(m_abs_residual_translation) + 4.0f * gamma_bound(4) * extent;
+    m_guard = is_finite(inner.lo) && is_finite(inner.hi) && !inner.is_empty() && std::isfinite(extent) &&
+              m_guard_relative < 1e-3f && std::isfinite(m_guard_absolute);
+}
+
+bool Instance::misses_bounds(const Ray& ray) const {
+    if (!m_guard) return false;
+    const Vec3 o = glm::abs(ray.origin);
+    const float pad = m_guard_absolute + m_guard_relative * 2.0f * std::max({o.x, o.y, o.z});
+    if (!(pad < kInfinity)) return false;  // NaN or infinite origins go the general way
+    const AABB box{m_world_bounds.lo - Vec3(pad), m_world_bounds.hi + Vec3(pad)};
+    float t0, t1;
+    return !BoxRay(ray).clip(box, ray.tmax, t0, t1);
 }
 
 AABB Instance::bounds() const {
@@ -40,6 +76,7 @@ Ray Instance::to_object(const Ray& ray) const {
 }
 
 bool Instance::intersect(const Ray& ray, SurfaceHit& hit) const {
+    if (misses_bounds(ray)) return false;
     SurfaceHit local = hit;
     if (!m_shape->intersect(to_object(ray), local)) return false;
     hit = local;
@@ -62,7 +99,7 @@ bool Instance::intersect(const Ray& ray, SurfaceHit& hit) const {
     return true;
 }
 
-bool Instance::occluded(const Ray& ray) const { return m_shape->occluded(to_object(ray)); }
+bool Instance::occluded(const Ray& ray) const { return !misses_bounds(ray) && m_shape->occluded(to_object(ray)); }
 
 std::optional<UvFootprint> Instance::uv_footprint(const Mat4& to_world) const {
     // The identity is the common case (an instance in world space): its product with m_to_world would be

@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -34,19 +35,28 @@ struct CornerKeyHash {
 };
 
 // Calls f(line, line_number, offset of the line in text) for every line as tinyobjloader splits them (at \n, \r\n or a
-// lone \r), cut at a NUL as its C-string parsing is, with leading blanks dropped as it drops them.
+// lone \r), cut at a NUL as its C-string parsing is, with leading blanks dropped as it drops them. The line ends and
+// NULs are found with memchr: a byte loop here was 60 M of the 147 M instructions the bunny's check took.
 template <class F>
 void for_each_line(std::string_view text, F&& f) {
-    std::size_t line_no = 0, pos = 0;
-    while (pos < text.size()) {
-        const std::size_t start = pos;
-        std::size_t end = pos;
-        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
-        std::string_view line = text.substr(pos, end - pos);
-        pos = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
-        line = line.substr(0, line.find('\0'));
-        const std::size_t first = line.find_first_not_of(" \t");
-        f(first == std::string_view::npos ? std::string_view() : line.substr(first), ++line_no, start);
+    const char* const begin = text.data();
+    const char* const end = begin + text.size();
+    std::size_t line_no = 0;
+    const char* p = begin;
+    while (p < end) {
+        const auto* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+        const char* stop = nl ? nl : end;
+        if (const auto* cr = static_cast<const char*>(std::memchr(p, '\r', static_cast<std::size_t>(stop - p))))
+            stop = cr;
+        const char* next = stop == end ? end : stop + (*stop == '\r' && stop + 1 < end && stop[1] == '\n' ? 2 : 1);
+        const char* cut = p;
+        const char* content_end = stop;
+        if (const auto* nul = static_cast<const char*>(std::memchr(p, '\0', static_cast<std::size_t>(stop - p))))
+            content_end = nul;
+        while (cut < content_end && (*cut == ' ' || *cut == '\t')) ++cut;
+        f(std::string_view(cut, static_cast<std::size_t>(content_end - cut)), ++line_no,
+          static_cast<std::size_t>(p - begin));
+        p = next;
     }
 }
 
@@ -73,12 +83,28 @@ struct LineError {
     }
 };
 
+// Whether w is [+-]digits or [+-]digits.digits with at most 40 characters: a number from_chars reads whole and
+// finite, settled without it (the common case; 21 M instructions of from_chars on the bunny).
+bool is_plain_decimal(std::string_view w) {
+    if (w.size() > 40) return false;
+    std::size_t i = !w.empty() && (w[0] == '-' || w[0] == '+') ? 1 : 0;
+    const std::size_t int_start = i;
+    while (i < w.size() && w[i] >= '0' && w[i] <= '9') ++i;
+    if (i == int_start) return false;
+    if (i == w.size()) return true;
+    if (w[i] != '.') return false;
+    const std::size_t frac_start = ++i;
+    while (i < w.size() && w[i] >= '0' && w[i] <= '9') ++i;
+    return i > frac_start && i == w.size();
+}
+
 // "v x y z": tinyobjloader reads "nan", "inf" and malformed numbers as 0 without a word.
 void check_vertex(std::string_view line, const LineError& fail) {
     std::size_t pos = 1;
     for (std::size_t k = 0; k < 3; ++k) {
         double value = 0.0;
         std::string_view w = next_word(line, pos);
+        if (is_plain_decimal(w)) continue;
         bool ok = !w.empty();
         if (ok) {
             if (w.front() == '+') w.remove_prefix(1);
@@ -204,11 +230,35 @@ private:
             m_forward.push_back({line_no, std::string(text), &kind, magnitude});
     }
 
+    // A corner of unsigned indices (v, v/vt, v//vn or v/vt/vn; at most 9 digits each, not 0) all within the
+    // elements read so far: legal, settled without the general check below. False leaves it to that check.
+    bool plain_corner_in_range(std::string_view corner) const {
+        std::int64_t value[3] = {0, 0, 0};
+        std::size_t digits[3] = {0, 0, 0};
+        std::size_t slot = 0;
+        for (const char c : corner) {
+            if (c == '/') {
+                if (++slot == 3) return false;
+            } else if (c >= '0' && c <= '9') {
+                if (++digits[slot] > 9) return false;
+                value[slot] = value[slot] * 10 + (c - '0');
+            } else {
+                return false;
+            }
+        }
+        // v needs its index; "v/" and "v//" are malformed, "v//vn" has no uv.
+        if (digits[0] == 0 || value[0] == 0 || value[0] > m_so_far.positions) return false;
+        if (slot >= 1 && (digits[1] != 0 ? value[1] == 0 || value[1] > m_so_far.uvs : slot != 2)) return false;
+        if (slot == 2 && (digits[2] == 0 || value[2] == 0 || value[2] > m_so_far.normals)) return false;
+        return true;
+    }
+
     // "f c1 c2 ...", each corner v, v/vt, v//vn or v/vt/vn. Returns the number of corners.
     std::size_t check_face(std::string_view line, std::size_t line_no) {
         std::size_t pos = 1, corners = 0;
         for (std::string_view corner = next_word(line, pos); !corner.empty();
              corner = next_word(line, pos), ++corners) {
+            if (plain_corner_in_range(corner)) continue;
             const auto n = 1 + static_cast<std::size_t>(std::count(corner.begin(), corner.end(), '/'));
             std::string_view slot[3];  // v, vt, vn
             for (std::size_t k = 0, start = 0; k < n && k < 3; ++k) {
