@@ -76,16 +76,6 @@ inline bool Sphere::intersect_distance(const Ray& ray, RayTerms& terms, float& t
     if (b > 0.0f && c > 0.0f && ray.tmin >= 0.0f) return false;
     // |oc|^2 - b^2 / a loses everything for a far ray; the perpendicular vector keeps full precision.
     if (!terms.perp_known) {
-        // A clear miss first, without the division and the square root: oo a - b^2 is a p^2 (p the centre's
-        // distance from the line; Lagrange's identity), off by at most ~15 u oo a in floats (u = 2^-24). Above
-        // a (r^2 + 64 u (r^2 + oo)) it makes p > r + 20 u (r + |oc|), while the perpendicular below rounds
-        // off p by at most ~13 u |oc|: it lands above r too and disc < 0, the miss the general path finds.
-        // The bounds keep that disc from underflowing to -0 (which stable_roots() would let through) and an
-        // overflowed oo a out; NaN fails the compare. tests/geometry/shapes_test checks agreement bit for bit.
-        const float r2 = m_radius * m_radius;
-        const float far = terms.oo * a - b * b;
-        if (far > a * (r2 + 0x1p-18f * (r2 + terms.oo)) && far < kInfinity && a >= 1e-12f && m_radius >= 1e-6f)
-            return false;
         terms.perp_length = glm::length(terms.oc - (b / a) * d);
         terms.perp_known = true;
     }
