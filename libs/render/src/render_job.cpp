@@ -102,6 +102,11 @@ void WhittedRadiance::radiance_batch(std::span<const CameraSample> samples, std:
     // Pixels in runs of four columns over the group's rows (4 x 2 tiles of a two-row group), the order packets
     // want; each sample's radiance is its own whatever the order.
     const std::size_t n = samples.size();
+    if (!m_integrator.traces_packets()) {
+        for (std::size_t i = 0; i < n; ++i)
+            out[i] = m_integrator.radiance(samples[i].ray, samples[i].stream.key(), counters);
+        return;
+    }
     std::vector<std::uint32_t> order(n);
     for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
     auto place = [&](std::uint32_t i) {

@@ -124,6 +124,7 @@ public:
     }
 
     bool is_tree() const { return m_tree.has_value(); }
+    bool traces_packets() const { return m_flat || m_packet_members; }
     std::size_t flat_meshes() const { return m_flat ? m_flat->part_count() : 0; }
 
     /// The closest hit's object index, kLookUp for a tree's hit or kNone. for_shading: the record may leave
@@ -433,6 +434,9 @@ void Scene::occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> b
         set.occluded_packet(rays.subspan(first, n), blocked.subspan(first, n));
     }
 }
+
+// The opaque and transmissive sets hold some of m_all's members: none has packets where m_all has none.
+bool Scene::traces_packets() const { return m_all->traces_packets(); }
 
 SurfaceInfo Scene::surface(const SurfaceHit& hit) const {
     const auto it = std::lower_bound(m_index.begin(), m_index.end(), hit.shape,

@@ -107,6 +107,10 @@ RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, in
 
 void WhittedIntegrator::radiance_packet(std::span<const Ray> rays, std::span<const SampleKey> keys, std::span<RGB> out,
                                         RayStats& stats) const {
+    if (!m_scene.traces_packets()) {
+        for (std::size_t i = 0; i < rays.size(); ++i) out[i] = radiance(rays[i], keys[i], stats);
+        return;
+    }
     // trace() at depth 0 for each ray, the scene asked about the rays with a direction all at once.
     constexpr std::size_t kChunk = 16;
     std::array<Ray, kChunk> traced;
@@ -171,9 +175,10 @@ std::uint8_t WhittedIntegrator::known_for(const std::uint8_t* known, std::size_t
     return known && light < kPacketLights ? known[light] : kNotTraced;
 }
 
-RGB WhittedIntegrator::shade(const Ray& ray, float dlen, const SurfaceHit& hit, const SurfaceInfo& info,
-                             const SampleKey& key, int depth, int crossings, float weight, RayStats& stats,
-                             const std::uint8_t* known) const {
+[[gnu::always_inline]] inline RGB WhittedIntegrator::shade(const Ray& ray, float dlen, const SurfaceHit& hit,
+                                                           const SurfaceInfo& info, const SampleKey& key, int depth,
+                                                           int crossings, float weight, RayStats& stats,
+                                                           const std::uint8_t* known) const {
     const Material& material = *info.material;
     const Vec3 d = ray.direction / dlen;
     const Vec3 wo = -d;

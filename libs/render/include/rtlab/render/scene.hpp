@@ -79,6 +79,8 @@ public:
     void intersect_surface_packet(std::span<const Ray> rays, std::span<SurfaceHit> hits, std::span<SurfaceInfo> infos,
                                   std::span<std::uint8_t> found) const override;
     void occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const override;
+    /// Whether some object's mesh (or the flat tree) traces packets.
+    bool traces_packets() const override;
 
     /// What answers intersect(): "list" or "kd-tree", for the statistics.
     std::string_view structure() const;

@@ -61,6 +61,9 @@ public:
                                           std::span<SurfaceInfo> infos, std::span<std::uint8_t> found) const;
     /// occluded() of each ray: blocked[i] = 1 or 0, as intersect_surface_packet.
     virtual void occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
+    /// Whether the packet queries trace any rays together; false (the default): they ask one ray at a time, so a
+    /// caller may as well ask single queries.
+    virtual bool traces_packets() const { return false; }
 };
 
 /// \brief Shapes with their materials, every query by brute force: tests, and the "plain list" scene level.
