@@ -2,8 +2,8 @@
 // and renders with and without packets byte for byte. The hard inputs: objects that overlap exactly (two instances
 // of one mesh under one transform, a quad in the plane of a mesh's faces: ties between objects, which the single
 // query gives to the object tested first), rays through vertices and edges, rays that start on a surface, grazing
-// and axis-parallel rays with +0 and -0 components, degenerate and bounded intervals; groups of every size from 1
-// to 16 and beyond, camera tiles and rays of mixed octants; lists, kd-trees, and the flat tree of small meshes.
+// and axis-parallel rays with +0 and -0 components, degenerate and bounded intervals; groups of sizes from 1 to 16
+// and beyond, camera tiles and rays of mixed octants; lists, kd-trees, and the flat tree of small meshes.
 #include "image_bytes.hpp"
 #include "scene_fixtures.hpp"
 #include "test_meshes.hpp"
@@ -34,7 +34,9 @@ namespace {
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
-bool same_bits(const Vec3& a, const Vec3& b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
+bool same_bits(const Vec3& a, const Vec3& b) {
+    return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
+}
 
 bool same_hit(const SurfaceHit& a, const SurfaceHit& b) {
     return same_bits(a.t, b.t) && same_bits(a.point, b.point) && same_bits(a.point_error, b.point_error) &&
@@ -69,10 +71,10 @@ Differences compare(const Scene& scene, std::span<const Ray> rays, std::size_t s
         ++d.rays;
         d.hits += single;
         d.blocked += occluded;
-        d.closest += found[i] != (single ? 1 : 0) ||
-                     (single && (!same_hit(hit, hits[i]) || info.material != infos[i].material ||
-                                 info.flags.casts_shadows != infos[i].flags.casts_shadows ||
-                                 info.flags.reversed != infos[i].flags.reversed));
+        d.closest +=
+            found[i] != (single ? 1 : 0) || (single && (!same_hit(hit, hits[i]) || info.material != infos[i].material ||
+                                                        info.flags.casts_shadows != infos[i].flags.casts_shadows ||
+                                                        info.flags.reversed != infos[i].flags.reversed));
         d.any += blocked[i] != (occluded ? 1 : 0);
     }
     return d;
@@ -103,8 +105,8 @@ std::vector<SceneObject> tied_objects(const std::string& method) {
     const auto mesh = std::make_shared<MeshShape>(sphere_mesh, method);
     const Mat4 moved = glm::translate(Mat4(1.0f), Vec3(2.5f, 0.25f, -0.5f)) *
                        glm::rotate(Mat4(1.0f), 0.7f, Vec3(0.3f, 1.0f, 0.2f)) * glm::scale(Mat4(1.0f), Vec3(0.8f));
-    const auto grid = std::make_shared<MeshShape>(std::make_shared<const TriangleMesh>(test::coplanar_grid(8, -1.0f)),
-                                                  method);
+    const auto grid =
+        std::make_shared<MeshShape>(std::make_shared<const TriangleMesh>(test::coplanar_grid(8, -1.0f)), method);
     const auto small = std::make_shared<const TriangleMesh>(test::stacked_quads(6, -2.0f));
     std::vector<SceneObject> objects;
     objects.push_back({mesh, lambert(RGB(0.8f, 0.2f, 0.2f)), {}, "mesh"});
@@ -141,7 +143,8 @@ std::vector<Ray> hard_rays(const Scene& scene) {
     for (float zero : {0.0f, -0.0f})
         for (int i = 0; i <= 8; ++i)
             for (int j = 0; j <= 8; ++j) {
-                rays.push_back(Ray{Point3(static_cast<float>(i), static_cast<float>(j), 5.0f), Vec3(zero, zero, -1.0f)});
+                rays.push_back(
+                    Ray{Point3(static_cast<float>(i), static_cast<float>(j), 5.0f), Vec3(zero, zero, -1.0f)});
                 rays.push_back(Ray{Point3(static_cast<float>(i) - 6.0f, static_cast<float>(j) - 6.0f, 5.0f),
                                    Vec3(1.0f, 1.0f, -1.0f)});
             }
@@ -162,9 +165,9 @@ std::vector<Ray> hard_rays(const Scene& scene) {
     }
     const Point3 o(0.1f, 0.2f, 5.0f);
     const Vec3 d(0.0f, 0.0f, -1.0f);
-    for (const Ray& special : {Ray{Point3(kNaN, 0.0f, 5.0f), d}, Ray{o, Vec3(0.0f, kNaN, -1.0f)}, Ray{o, Vec3(0.0f)},
-                               Ray{o, d, 5.0f, 1.0f}, Ray{o, d, 4.0f, 4.0f}, Ray{o, d, kNaN, 10.0f},
-                               Ray{o, d, 0.0f, kNaN}, Ray{o, d * 1e-30f}, Ray{o, d * 1e30f}})
+    for (const Ray& special :
+         {Ray{Point3(kNaN, 0.0f, 5.0f), d}, Ray{o, Vec3(0.0f, kNaN, -1.0f)}, Ray{o, Vec3(0.0f)}, Ray{o, d, 5.0f, 1.0f},
+          Ray{o, d, 4.0f, 4.0f}, Ray{o, d, kNaN, 10.0f}, Ray{o, d, 0.0f, kNaN}, Ray{o, d * 1e-30f}, Ray{o, d * 1e30f}})
         for (int lane = 0; lane < 5; ++lane) {
             rays.push_back(special);
             rays.push_back(Ray{o, Vec3(0.01f * static_cast<float>(lane), 0.02f, -1.0f)});
@@ -191,9 +194,9 @@ TEST_CASE("scene packet queries answer as single queries with ties between objec
                 options.flat_mesh_triangles = flat;
                 const Scene scene(tied_objects(method), options);
                 const std::vector<Ray> rays = hard_rays(scene);
-                for (std::size_t size = 1; size <= 17; ++size) {
-                    // Every size on kd-sah; 8, 16 and 17 (past one chunk) on the others.
-                    if (method != "kd-sah" && size != 8 && size < 16) continue;
+                for (std::size_t size : {1, 2, 3, 5, 8, 11, 16, 17}) {
+                    // Sizes below, at and past a packet of 8 and a chunk of 16 on kd-sah; 8 and 17 on the others.
+                    if (method != "kd-sah" && size != 8 && size != 17) continue;
                     const Differences d = compare(scene, rays, size);
                     INFO(method << ", " << label(options) << ", groups of " << size << ": " << d.closest
                                 << " closest-hit and " << d.any << " any-hit differences of " << d.rays << " rays ("
@@ -254,12 +257,10 @@ TEST_CASE("renders with and without packets are byte-identical for every pattern
         int spp;
         IntegratorKind integrator;
     };
-    const std::vector<Setting> settings = {{PixelPattern::none, 1, IntegratorKind::whitted},
-                                           {PixelPattern::jittered, 2, IntegratorKind::whitted},
-                                           {PixelPattern::sobol, 2, IntegratorKind::whitted},
-                                           {PixelPattern::adaptive, 1, IntegratorKind::whitted},
-                                           {PixelPattern::none, 1, IntegratorKind::path},
-                                           {PixelPattern::sobol, 2, IntegratorKind::direct}};
+    const std::vector<Setting> settings = {
+        {PixelPattern::none, 1, IntegratorKind::whitted},  {PixelPattern::jittered, 2, IntegratorKind::whitted},
+        {PixelPattern::sobol, 2, IntegratorKind::whitted}, {PixelPattern::adaptive, 1, IntegratorKind::whitted},
+        {PixelPattern::none, 1, IntegratorKind::path},     {PixelPattern::sobol, 2, IntegratorKind::direct}};
     for (const std::string& method : methods)
         for (const Setting& s : settings)
             for (int tile : {0, 5}) {
@@ -271,10 +272,54 @@ TEST_CASE("renders with and without packets are byte-identical for every pattern
                 const RenderResult with = render_job(job);
                 job.settings.packets = false;
                 const RenderResult without = render_job(job);
-                INFO(method << ", " << pixel_pattern_name(s.pattern) << ", integrator " << static_cast<int>(s.integrator)
-                            << ", tile " << tile);
+                INFO(method << ", " << pixel_pattern_name(s.pattern) << ", integrator "
+                            << static_cast<int>(s.integrator) << ", tile " << tile);
                 CHECK(same_bytes(with.image, without.image));
                 CHECK(with.stats.rays == without.stats.rays);
                 CHECK(with.samples == without.samples);
             }
+}
+
+TEST_CASE("Whitted radiance of a group equals each ray's radiance on the hard rays", "[render_job]") {
+    // Two point lights (the second inside the moved mesh's glass shell: its shadow segments cross transmissive
+    // surfaces), a directional one and the ambient light, over the tied objects; rays that start on surfaces,
+    // NaN and zero directions among them.
+    const Scene scene(tied_objects("kd-sah"));
+    Params sun;
+    sun.set("direction", Params::List{-0.3, -1.0, -0.4}).set("intensity", 1.5);
+    Params ambient;
+    ambient.set("intensity", 0.1);
+    const WhittedIntegrator whitted(
+        scene,
+        {point_light(Point3(-3.0f, 6.0f, 4.0f), 60.0f), point_light(Point3(2.5f, 0.25f, -0.5f), 5.0f),
+         light("directional", sun), light("ambient", ambient)},
+        WhittedOptions{});
+    const std::vector<Ray> rays = hard_rays(scene);
+    std::vector<SampleKey> keys;
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        keys.push_back(SampleKey{3, static_cast<std::uint32_t>(i % 64), static_cast<std::uint32_t>(i / 64), 0, 0});
+    for (std::size_t size : {1, 8, 16, 37}) {
+        std::vector<RGB> packet(rays.size());
+        RayStats packet_stats, single_stats;
+        for (std::size_t i = 0; i < rays.size(); i += size) {
+            const std::size_t n = std::min(size, rays.size() - i);
+            whitted.radiance_packet(std::span<const Ray>(rays).subspan(i, n),
+                                    std::span<const SampleKey>(keys).subspan(i, n),
+                                    std::span<RGB>(packet).subspan(i, n), packet_stats);
+        }
+        std::size_t differences = 0, lit = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const RGB single = whitted.radiance(rays[i], keys[i], single_stats);
+            differences += !(same_bits(single.r, packet[i].r) && same_bits(single.g, packet[i].g) &&
+                             same_bits(single.b, packet[i].b));
+            lit += single.r > 0.0f;
+        }
+        INFO("groups of " << size << ": " << differences << " differences of " << rays.size() << " rays");
+        CHECK(differences == 0);
+        CHECK(lit > rays.size() / 4);
+        CHECK(packet_stats.shadow == single_stats.shadow);
+        CHECK(packet_stats.reflected == single_stats.reflected);
+        CHECK(packet_stats.refracted == single_stats.refracted);
+        CHECK(single_stats.shadow > rays.size());
+    }
 }
