@@ -44,6 +44,7 @@ rtlab::ProgressiveSettings progressive_settings(const rtlab::RenderSettings& s) 
     p.seed = s.seed;
     p.tile_size = s.tile_size;
     p.threads = s.threads;
+    p.packets = s.packets;
     return p;
 }
 
@@ -203,6 +204,7 @@ int run(const rtlab::app::RenderOptions& options, const char* argv0) {
     if (common.aa_threshold) settings.adaptive.threshold = *common.aa_threshold;
     if (common.aa_depth) settings.adaptive.max_depth = *common.aa_depth;
     if (common.max_depth) scene.job.whitted.max_depth = *common.max_depth;
+    if (common.no_packets) settings.packets = false;
     rtlab::app::check_sampling(settings, common);
     const std::filesystem::path output = common.output.empty() ? scene.output : common.output;
     if (output.empty()) throw rtlab::Error(options.scene.string() + ": no output: give -o FILE or render.output");

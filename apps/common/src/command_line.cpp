@@ -245,6 +245,8 @@ void CommandLine::add_common(CommonOptions& o, const std::vector<std::string>& t
     tones.insert(tones.end(), tone_operators.begin(), tone_operators.end());
     add_word("--tonemap", o.tonemap, std::move(tones), "PNG tone operator, none clamps (default: the scene's)");
     add_flag("-q,--quiet", o.quiet, "no progress bar and no summary");
+    add_flag("--no-packets", o.no_packets,
+             "trace camera rays one at a time instead of in coherent groups (for measurements; the same image)");
     add_list("--data-dir", o.data_dirs, "folder searched first for the data files (repeatable)");
 
     const CLI::Option* width_flag = m_app.get_option("--width");

@@ -32,6 +32,7 @@ void apply_course_options(const CourseOptions& o, RenderJob& job) {
     if (o.integrator) job.integrator = parse_integrator(*o.integrator).value_or(IntegratorKind::whitted);
     if (o.threads) s.threads = *o.threads;
     if (o.seed) s.seed = *o.seed;
+    if (o.no_packets) s.packets = false;
     check_sampling(s, o);
 }
 

@@ -79,6 +79,11 @@ bool Instance::intersect(const Ray& ray, SurfaceHit& hit) const {
     if (misses_bounds(ray)) return false;
     SurfaceHit local = hit;
     if (!m_shape->intersect(to_object(ray), local)) return false;
+    finish_hit(ray, local, hit);
+    return true;
+}
+
+void Instance::finish_hit(const Ray& ray, const SurfaceHit& local, SurfaceHit& hit) const {
     hit = local;
     hit.point = Point3(m_to_world * Vec4(local.point, 1.0f));
     // The inner bound through the matrix, plus the rounding of this transform (Pharr et al., gamma(3)), plus
@@ -96,7 +101,6 @@ bool Instance::intersect(const Ray& ray, SurfaceHit& hit) const {
     if (glm::dot(ortho, ortho) > 0.0f) hit.tangent = glm::normalize(ortho);
     hit.front_face = glm::dot(ray.direction, hit.geometric_normal) < 0.0f;
     hit.shape = this;
-    return true;
 }
 
 bool Instance::occluded(const Ray& ray) const { return !misses_bounds(ray) && m_shape->occluded(to_object(ray)); }

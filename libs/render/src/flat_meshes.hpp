@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace rtlab {
@@ -32,6 +33,13 @@ public:
     /// Closest hit with ray.tmin < t < ray.tmax: t, merged triangle index and barycentrics.
     bool intersect(const Ray& ray, MeshHit& hit) const { return m_accel->intersect(ray, hit); }
     bool occluded(const Ray& ray) const { return m_accel->occluded(ray); }
+    /// intersect() and occluded() of a group of rays traced together (TriangleAccelerator's packets).
+    void intersect_packet(std::span<const Ray> rays, std::span<MeshHit> hits) const {
+        m_accel->intersect_packet(rays, hits);
+    }
+    void occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const {
+        m_accel->occluded_packet(rays, blocked);
+    }
     /// Fills hit as the part's MeshShape::intersect() would have for this triangle hit; returns the object.
     std::size_t complete(const Ray& ray, const MeshHit& found, SurfaceHit& hit) const;
 

@@ -72,7 +72,11 @@ public:
                         if (m_buffer.next_sample(x, yy) == i && i < ends.at(x, yy))
                             add_camera_sample(x, yy, i, counters);
                 if (m_samples.empty()) continue;
-                m_radiance.radiance_batch(m_samples, std::span<RGB>(m_values.data(), m_samples.size()), counters);
+                if (m_settings.packets)
+                    m_radiance.radiance_batch(m_samples, std::span<RGB>(m_values.data(), m_samples.size()), counters);
+                else
+                    for (std::size_t k = 0; k < m_samples.size(); ++k)
+                        m_values[k] = m_radiance.sample_radiance(m_samples[k], counters);
                 for (std::size_t k = 0; k < m_samples.size(); ++k)
                     m_buffer.add(m_pixels[k].first, m_pixels[k].second, i, m_values[k]);
             }

@@ -2,8 +2,11 @@
 #include <rtlab/render/sampled_lights.hpp>
 #include <rtlab/render/sppm.hpp>
 
+#include <algorithm>
 #include <memory>
 #include <string>
+#include <tuple>
+#include <vector>
 
 namespace rtlab {
 
@@ -93,6 +96,34 @@ struct SppmOwner {
 };
 
 }  // namespace
+
+void WhittedRadiance::radiance_batch(std::span<const CameraSample> samples, std::span<RGB> out,
+                                     RayCounters& counters) const {
+    // Pixels in runs of four columns over the group's rows (4 x 2 tiles of a two-row group), the order packets
+    // want; each sample's radiance is its own whatever the order.
+    const std::size_t n = samples.size();
+    if (!m_integrator.traces_packets()) {
+        for (std::size_t i = 0; i < n; ++i)
+            out[i] = m_integrator.radiance(samples[i].ray, samples[i].stream.key(), counters);
+        return;
+    }
+    std::vector<std::uint32_t> order(n);
+    for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+    auto place = [&](std::uint32_t i) {
+        const SampleKey& k = samples[i].stream.key();
+        return std::tuple(k.x >> 2, k.y, k.x, i);
+    };
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return place(a) < place(b); });
+    std::vector<Ray> rays(n);
+    std::vector<SampleKey> keys(n);
+    std::vector<RGB> values(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        rays[k] = samples[order[k]].ray;
+        keys[k] = samples[order[k]].stream.key();
+    }
+    m_integrator.radiance_packet(rays, keys, values, counters);
+    for (std::size_t k = 0; k < n; ++k) out[order[k]] = values[k];
+}
 
 std::shared_ptr<const RadianceSource> make_radiance_source(const RenderJob& job, IntegratorKind kind,
                                                            const std::atomic<bool>* stop) {

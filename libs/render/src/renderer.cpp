@@ -60,6 +60,46 @@ bool render_fixed_tile(const TileContext& c, const Tile& t, RayCounters& counter
     return true;
 }
 
+/// render_fixed_tile() with the samples in groups (RenderSettings::packets): one sample index over two pixel rows
+/// at a time, each pixel's sum taking its samples in the same order.
+bool render_fixed_tile_groups(const TileContext& c, const Tile& t, RayCounters& counters) {
+    const RenderSettings& s = c.settings;
+    const int n = pattern_sample_count(s.pattern, s.spp);
+    const std::size_t row = static_cast<std::size_t>(t.x1 - t.x0);
+    std::vector<CameraSample> samples;
+    samples.reserve(2 * row);
+    std::vector<RGB> values(2 * row), sums(2 * row);
+    for (int y = t.y0; y < t.y1; y += 2) {
+        if (stopped(c.callbacks)) return false;
+        const int y1 = std::min(y + 2, t.y1);
+        std::fill(sums.begin(), sums.end(), RGB{});
+        for (int i = 0; i < n; ++i) {
+            samples.clear();
+            for (int yy = y; yy < y1; ++yy)
+                for (int x = t.x0; x < t.x1; ++x) {
+                    SampleKey key{s.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(yy), 0, 0};
+                    const Vec2 offset = pattern_sample(s.pattern, s.spp, i, key);
+                    key.sample = static_cast<std::uint32_t>(i);
+                    const Vec2 lens = c.camera.uses_lens_sample() ? sample_uniform2(key, kLensDimension) : Vec2(0.5f);
+                    const Vec2 position = Vec2(static_cast<float>(x), static_cast<float>(yy)) + offset;
+                    samples.push_back(CameraSample{c.camera.generate_ray(position, lens),
+                                                   SampleStream(SampleSequence::independent, key)});
+                    ++counters.camera;
+                }
+            c.radiance.radiance_batch(samples, std::span<RGB>(values.data(), samples.size()), counters);
+            for (std::size_t k = 0; k < samples.size(); ++k) sums[k] += values[k];
+        }
+        std::size_t k = 0;
+        for (int yy = y; yy < y1; ++yy)
+            for (int x = t.x0; x < t.x1; ++x, ++k) {
+                c.image.at(x, yy) = sums[k] / static_cast<float>(n);
+                c.samples[static_cast<std::size_t>(yy) * static_cast<std::size_t>(c.image.width()) +
+                          static_cast<std::size_t>(x)] = static_cast<std::uint32_t>(n);
+            }
+    }
+    return true;
+}
+
 /// The corners of one row of pixels of a tile: (R + 1) lattice rows of (tile width * R + 1) points,
 /// R = 2^max_depth. The bottom lattice row becomes the next pixel row's top, so every lattice point of a
 /// tile is traced at most once.
@@ -198,6 +238,7 @@ RenderResult render_sobol(const Camera& camera, const RadianceSource& radiance, 
     p.seed = settings.seed;
     p.tile_size = settings.tile_size;
     p.threads = settings.threads;
+    p.packets = settings.packets;
     ProgressiveCallbacks cb;
     cb.progress = callbacks.progress;
     cb.stop = callbacks.stop;
@@ -249,7 +290,8 @@ RenderResult render(const Camera& camera, const RadianceSource& radiance, const 
         const Tile tile = grid.tile(index);
         RayCounters counters;
         const bool complete = settings.pattern == PixelPattern::adaptive ? render_adaptive_tile(context, tile, counters)
-                                                                         : render_fixed_tile(context, tile, counters);
+                              : settings.packets ? render_fixed_tile_groups(context, tile, counters)
+                                                 : render_fixed_tile(context, tile, counters);
         std::lock_guard lock(progress_mutex);
         totals += counters;
         if (!complete) return;

@@ -1,5 +1,8 @@
 #include <rtlab/accel/kd_tree.hpp>
+#include <rtlab/accel/mesh_shape.hpp>
 #include <rtlab/core/error.hpp>
+#include <rtlab/geometry/instance.hpp>
+#include <rtlab/geometry/mesh_surface.hpp>
 #include <rtlab/geometry/quad.hpp>
 #include <rtlab/geometry/sphere.hpp>
 #include <rtlab/render/scene.hpp>
@@ -7,6 +10,7 @@
 #include "flat_meshes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -52,11 +56,35 @@ struct SetMember {
     const Quad* quad = nullptr;
     // A sphere with the very centre of the member before it in its set: it reuses that sphere's ray terms.
     bool shares_centre = false;
+    // The shape when it is a MeshShape, or the MeshShape inside it when it is an Instance of one (then `instance`):
+    // packets of rays go through the mesh's accelerator together.
+    const MeshShape* mesh = nullptr;
+    const Instance* instance = nullptr;
 };
+
+/// Rays a scene's packet queries hand to the structures at once (a group of more is taken in such chunks).
+inline constexpr std::size_t kPacketChunk = 16;
 
 namespace {
 
 bool same_bits(const Point3& a, const Point3& b) { return std::memcmp(&a, &b, sizeof(Point3)) == 0; }
+
+/// Where one ray's walk over a list stands: the ray with tmax at the nearest hit so far, and whose hit that is.
+struct ListWalk {
+    Ray r;
+    const SetMember* deferred = nullptr;  // the nearest member when its record is still to be filled
+    const SetMember* found = nullptr;
+    float alpha = 0.0f, beta = 0.0f;  // the deferred quad's plane coordinates
+};
+
+/// The shape as a MeshShape whose accelerator's packets give its single rays' answers bit for bit: the kd-trees'
+/// (Embree's rtcIntersect8 may differ from rtcIntersect1 in the last bits of t).
+const MeshShape* packet_mesh(const Shape& shape) {
+    const auto* mesh = dynamic_cast<const MeshShape*>(&shape);
+    if (!mesh) return nullptr;
+    static const std::vector<std::string> kd = kd_tree_methods();
+    return std::find(kd.begin(), kd.end(), mesh->accelerator().name()) != kd.end() ? mesh : nullptr;
+}
 
 }  // namespace
 
@@ -91,10 +119,12 @@ public:
                 m_list[i].shares_centre =
                     m_list[i].sphere && prev && same_bits(prev->centre(), m_list[i].sphere->centre());
             }
+            m_packet_members = std::any_of(m_list.begin(), m_list.end(), [](const SetMember& m) { return m.mesh; });
         }
     }
 
     bool is_tree() const { return m_tree.has_value(); }
+    bool traces_packets() const { return m_flat || m_packet_members; }
     std::size_t flat_meshes() const { return m_flat ? m_flat->part_count() : 0; }
 
     /// The closest hit's object index, kLookUp for a tree's hit or kNone. for_shading: the record may leave
@@ -111,6 +141,87 @@ public:
 
     bool occluded(const Ray& ray) const { return (m_flat && m_flat->occluded(ray)) || occluded_other(ray); }
 
+    /// closest() of up to kPacketChunk rays: the flat tree and the list's meshes trace them together, every other
+    /// member one ray at a time, each ray meeting the members in closest()'s order with closest()'s tmax.
+    void closest_packet(std::span<const Ray> rays, std::span<SurfaceHit> hits, std::span<std::size_t> objects,
+                        bool for_shading) const {
+        const std::size_t n = rays.size();
+        if (!m_flat && !m_packet_members) {
+            for (std::size_t i = 0; i < n; ++i) objects[i] = closest(rays[i], hits[i], for_shading);
+            return;
+        }
+        std::array<MeshHit, kPacketChunk> flat;
+        if (m_flat) m_flat->intersect_packet(rays, std::span<MeshHit>(flat.data(), n));
+        std::array<ListWalk, kPacketChunk> walks;
+        for (std::size_t i = 0; i < n; ++i) {
+            walks[i].r = rays[i];
+            if (flat[i].hit()) walks[i].r.tmax = flat[i].t;
+        }
+        if (m_tree) {
+            for (std::size_t i = 0; i < n; ++i) objects[i] = m_tree->intersect(walks[i].r, hits[i]) ? kLookUp : kNone;
+        } else {
+            // Runs of members one ray at a time, each up to a mesh that all rays meet together. A run starts with no
+            // sphere before it, so none of its members shares ray terms across the mesh.
+            std::size_t begin = 0;
+            for (std::size_t k = 0; k <= m_list.size(); ++k) {
+                if (k < m_list.size() && !m_list[k].mesh) continue;
+                if (begin < k)
+                    for (std::size_t i = 0; i < n; ++i) {
+                        Sphere::RayTerms terms;
+                        for (std::size_t j = begin; j < k; ++j) step(m_list[j], walks[i], terms, hits[i]);
+                    }
+                if (k < m_list.size()) mesh_packet(m_list[k], std::span<ListWalk>(walks.data(), n), hits);
+                begin = k + 1;
+            }
+            for (std::size_t i = 0; i < n; ++i) objects[i] = finish(rays[i], walks[i], hits[i], for_shading);
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            if (objects[i] == kNone && flat[i].hit()) objects[i] = m_flat->complete(rays[i], flat[i], hits[i]);
+    }
+
+    /// occluded() of up to kPacketChunk rays: the same answers (whether anything blocks does not depend on the
+    /// order the members are asked in), the flat tree and the list's meshes tracing the rays together.
+    void occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const {
+        const std::size_t n = rays.size();
+        if (!m_flat && !m_packet_members) {
+            for (std::size_t i = 0; i < n; ++i) blocked[i] = occluded(rays[i]) ? 1 : 0;
+            return;
+        }
+        if (m_flat)
+            m_flat->occluded_packet(rays, blocked);
+        else
+            std::fill_n(blocked.begin(), n, std::uint8_t{0});
+        if (m_tree) {
+            for (std::size_t i = 0; i < n; ++i)
+                if (!blocked[i]) blocked[i] = m_tree->occluded(rays[i]) ? 1 : 0;
+            return;
+        }
+        std::size_t begin = 0;
+        for (std::size_t k = 0; k <= m_list.size(); ++k) {
+            if (k < m_list.size() && !m_list[k].mesh) continue;
+            if (begin < k)
+                for (std::size_t i = 0; i < n; ++i)
+                    if (!blocked[i]) blocked[i] = occluded_range(rays[i], begin, k) ? 1 : 0;
+            if (k < m_list.size()) {
+                // The rays still open, in their order, through the mesh's accelerator.
+                const SetMember& m = m_list[k];
+                std::array<Ray, kPacketChunk> open;
+                std::array<std::uint8_t, kPacketChunk> index, hit;
+                std::size_t count = 0;
+                for (std::size_t i = 0; i < n; ++i) {
+                    if (blocked[i]) continue;
+                    open[count] = m.instance ? m.instance->to_object(rays[i]) : rays[i];
+                    index[count++] = static_cast<std::uint8_t>(i);
+                }
+                if (count > 0)
+                    m.mesh->accelerator().occluded_packet(std::span<const Ray>(open.data(), count),
+                                                          std::span<std::uint8_t>(hit.data(), count));
+                for (std::size_t c = 0; c < count; ++c) blocked[index[c]] = hit[c];
+            }
+            begin = k + 1;
+        }
+    }
+
     std::size_t bytes() const {
         const std::size_t flat = m_flat ? m_flat->bytes() : 0;
         if (!m_tree) return flat + m_list.capacity() * sizeof(SetMember);
@@ -122,59 +233,96 @@ public:
 private:
     // closest() over the objects outside the flat tree, for hits before tmax.
     std::size_t closest_other(const Ray& ray, float tmax, SurfaceHit& hit, bool for_shading) const {
-        Ray r = ray;
-        r.tmax = tmax;
-        if (m_tree) return m_tree->intersect(r, hit) ? kLookUp : kNone;
-        // Shapes that defer their record only report distances; the one that stays nearest is completed at the
-        // end, so a hit a closer one replaces costs no record.
-        const SetMember* deferred = nullptr;
-        const SetMember* found = nullptr;
-        float alpha = 0.0f, beta = 0.0f;  // the deferred quad's plane coordinates
+        ListWalk w;
+        w.r = ray;
+        w.r.tmax = tmax;
+        if (m_tree) return m_tree->intersect(w.r, hit) ? kLookUp : kNone;
         Sphere::RayTerms terms;
-        for (const SetMember& m : m_list) {
-            float t;
-            if (m.sphere) {
-                if (!m.shares_centre) terms = m.sphere->ray_terms(r);
-                if (!m.sphere->intersect_distance(r, terms, t)) continue;
-                r.tmax = t;
-                deferred = &m;
-            } else if (m.quad) {
-                float a, b;
-                if (!m.quad->hit_params(r, t, a, b)) continue;
-                r.tmax = t;
-                alpha = a;
-                beta = b;
-                deferred = &m;
-            } else if (m.defers) {
-                if (!m.shape->intersect_distance(r, t)) continue;
-                r.tmax = t;
-                deferred = &m;
+        for (const SetMember& m : m_list) step(m, w, terms, hit);
+        return finish(ray, w, hit, for_shading);
+    }
+
+    // One member of the list for one ray. Shapes that defer their record only report distances; the one that stays
+    // nearest is completed at the end (finish), so a hit a closer one replaces costs no record.
+    static void step(const SetMember& m, ListWalk& w, Sphere::RayTerms& terms, SurfaceHit& hit) {
+        float t;
+        if (m.sphere) {
+            if (!m.shares_centre) terms = m.sphere->ray_terms(w.r);
+            if (!m.sphere->intersect_distance(w.r, terms, t)) return;
+            w.r.tmax = t;
+            w.deferred = &m;
+        } else if (m.quad) {
+            float a, b;
+            if (!m.quad->hit_params(w.r, t, a, b)) return;
+            w.r.tmax = t;
+            w.alpha = a;
+            w.beta = b;
+            w.deferred = &m;
+        } else if (m.defers) {
+            if (!m.shape->intersect_distance(w.r, t)) return;
+            w.r.tmax = t;
+            w.deferred = &m;
+        } else {
+            if (!m.shape->intersect(w.r, hit)) return;
+            w.r.tmax = hit.t;
+            w.deferred = nullptr;
+        }
+        w.found = &m;
+    }
+
+    // step() of a mesh member (m.mesh) for a group of rays, through its accelerator's packets: each ray asks with
+    // the tmax its walk has reached and gets the record MeshShape::intersect() (through the Instance) fills.
+    static void mesh_packet(const SetMember& m, std::span<ListWalk> walks, std::span<SurfaceHit> hits) {
+        const std::size_t n = walks.size();
+        std::array<Ray, kPacketChunk> rays;
+        std::array<MeshHit, kPacketChunk> found;
+        for (std::size_t i = 0; i < n; ++i) rays[i] = m.instance ? m.instance->to_object(walks[i].r) : walks[i].r;
+        m.mesh->accelerator().intersect_packet(std::span<const Ray>(rays.data(), n),
+                                               std::span<MeshHit>(found.data(), n));
+        for (std::size_t i = 0; i < n; ++i) {
+            const MeshHit& f = found[i];
+            if (!f.hit()) continue;
+            ListWalk& w = walks[i];
+            if (m.instance) {
+                SurfaceHit local = hits[i];
+                fill_mesh_hit(m.mesh->mesh(), f.primitive, rays[i], f.t, f.u, f.v, m.mesh, local);
+                m.instance->finish_hit(w.r, local, hits[i]);
             } else {
-                if (!m.shape->intersect(r, hit)) continue;
-                r.tmax = hit.t;
-                deferred = nullptr;
+                fill_mesh_hit(m.mesh->mesh(), f.primitive, rays[i], f.t, f.u, f.v, m.mesh, hits[i]);
             }
-            found = &m;
+            w.r.tmax = hits[i].t;
+            w.deferred = nullptr;
+            w.found = &m;
         }
-        if (!found) return kNone;
-        if (deferred) {
+    }
+
+    // The record of the member a walk found, and its object (kNone when it found none).
+    static std::size_t finish(const Ray& ray, const ListWalk& w, SurfaceHit& hit, bool for_shading) {
+        if (!w.found) return kNone;
+        if (const SetMember* deferred = w.deferred) {
             if (deferred->quad)
-                deferred->quad->fill_record(ray, r.tmax, alpha, beta, hit);
+                deferred->quad->fill_record(ray, w.r.tmax, w.alpha, w.beta, hit);
             else if (deferred->sphere && for_shading)
-                deferred->sphere->complete_hit_for(ray, r.tmax, hit, deferred->reads_uv, deferred->reads_tangent);
+                deferred->sphere->complete_hit_for(ray, w.r.tmax, hit, deferred->reads_uv, deferred->reads_tangent);
             else if (for_shading && !deferred->reads_uv)
-                deferred->shape->complete_hit_without_uv(ray, r.tmax, hit);
+                deferred->shape->complete_hit_without_uv(ray, w.r.tmax, hit);
             else
-                deferred->shape->complete_hit(ray, r.tmax, hit);
+                deferred->shape->complete_hit(ray, w.r.tmax, hit);
         }
-        hit.shape = found->shape;
-        return found->object;
+        hit.shape = w.found->shape;
+        return w.found->object;
     }
 
     bool occluded_other(const Ray& ray) const {
         if (m_tree) return m_tree->occluded(ray);
+        return occluded_range(ray, 0, m_list.size());
+    }
+
+    // occluded() over the list's members [begin, end).
+    bool occluded_range(const Ray& ray, std::size_t begin, std::size_t end) const {
         Sphere::RayTerms terms;
-        for (const SetMember& m : m_list) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const SetMember& m = m_list[i];
             float t, alpha, beta;
             if (m.sphere) {
                 if (!m.shares_centre) terms = m.sphere->ray_terms(ray);
@@ -189,6 +337,7 @@ private:
     std::optional<FlatMeshes> m_flat;
     std::vector<SetMember> m_list;
     std::optional<KdTree<ObjectSource>> m_tree;
+    bool m_packet_members = false;  // the list holds a mesh member
 };
 
 Scene::Scene(std::vector<SceneObject> objects, SceneOptions options) : m_objects(std::move(objects)) {
@@ -199,13 +348,18 @@ Scene::Scene(std::vector<SceneObject> objects, SceneOptions options) : m_objects
         const SceneObject& o = m_objects[i];
         if (!o.shape) throw Error("scene: " + object_label(o, i) + " has no shape");
         if (!o.material) throw Error("scene: " + object_label(o, i) + " has no material");
-        const SetMember member{o.shape.get(),
-                               i,
-                               o.shape->defers_record(),
-                               o.material->reads_lookup(),
-                               o.material->reflects_direct_light(),
-                               dynamic_cast<const Sphere*>(o.shape.get()),
-                               dynamic_cast<const Quad*>(o.shape.get())};
+        SetMember member{o.shape.get(),
+                         i,
+                         o.shape->defers_record(),
+                         o.material->reads_lookup(),
+                         o.material->reflects_direct_light(),
+                         dynamic_cast<const Sphere*>(o.shape.get()),
+                         dynamic_cast<const Quad*>(o.shape.get())};
+        member.mesh = packet_mesh(*o.shape);
+        if (const auto* instance = dynamic_cast<const Instance*>(o.shape.get())) {
+            member.mesh = packet_mesh(instance->shape());
+            if (member.mesh) member.instance = instance;
+        }
         all.push_back(member);
         m_index.emplace_back(o.shape.get(), i);
         m_bounds.expand(o.shape->bounds());
@@ -258,6 +412,31 @@ ShadowHit Scene::shadow(const Ray& ray, bool check_opaque, SurfaceHit& hit, Surf
     info = this->info(object, hit);
     return ShadowHit::transmissive;
 }
+
+void Scene::intersect_surface_packet(std::span<const Ray> rays, std::span<SurfaceHit> hits,
+                                     std::span<SurfaceInfo> infos, std::span<std::uint8_t> found) const {
+    std::array<std::size_t, kPacketChunk> objects;
+    for (std::size_t first = 0; first < rays.size(); first += kPacketChunk) {
+        const std::size_t n = std::min(kPacketChunk, rays.size() - first);
+        m_all->closest_packet(rays.subspan(first, n), hits.subspan(first, n), std::span<std::size_t>(objects.data(), n),
+                              true);
+        for (std::size_t i = 0; i < n; ++i) {
+            found[first + i] = objects[i] != Set::kNone ? 1 : 0;
+            if (objects[i] != Set::kNone) infos[first + i] = info(objects[i], hits[first + i]);
+        }
+    }
+}
+
+void Scene::occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const {
+    const Set& set = m_opaque_is_all ? *m_all : *m_opaque;
+    for (std::size_t first = 0; first < rays.size(); first += kPacketChunk) {
+        const std::size_t n = std::min(kPacketChunk, rays.size() - first);
+        set.occluded_packet(rays.subspan(first, n), blocked.subspan(first, n));
+    }
+}
+
+// The opaque and transmissive sets hold some of m_all's members: none has packets where m_all has none.
+bool Scene::traces_packets() const { return m_all->traces_packets(); }
 
 SurfaceInfo Scene::surface(const SurfaceHit& hit) const {
     const auto it = std::lower_bound(m_index.begin(), m_index.end(), hit.shape,

@@ -7,6 +7,7 @@
 #include <rtlab/shading/whitted.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace rtlab {
@@ -52,6 +53,11 @@ RGB WhittedIntegrator::escaped(const Ray& ray) const {
 }
 
 RGB WhittedIntegrator::transmittance(const SurfaceHit& from, const LightSample& light, RayStats& stats) const {
+    return transmittance(from, light, stats, kNotTraced);
+}
+
+RGB WhittedIntegrator::transmittance(const SurfaceHit& from, const LightSample& light, RayStats& stats,
+                                     std::uint8_t known) const {
     auto segment = [&light](const SurfaceHit& h) {
         return light.at_infinity ? spawn_ray(h, light.wi) : spawn_ray_to(h, light.position);
     };
@@ -64,7 +70,9 @@ RGB WhittedIntegrator::transmittance(const SurfaceHit& from, const LightSample& 
     for (int i = 0;; ++i) {
         SurfaceHit h;
         SurfaceInfo info;
-        const ShadowHit met = m_scene.shadow(ray, i == 0, h, info);
+        const ShadowHit met = i == 0 && known != kNotTraced
+                                  ? (known == kBlocked ? ShadowHit::opaque : m_scene.shadow(ray, false, h, info))
+                                  : m_scene.shadow(ray, i == 0, h, info);
         if (met == ShadowHit::opaque) return {};
         if (met == ShadowHit::clear || i >= m_options.max_crossings) return through;
         TextureLookup q;
@@ -94,6 +102,83 @@ RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, in
     SurfaceHit hit;
     SurfaceInfo info;
     if (!m_scene.intersect_surface(ray, hit, info)) return escaped(ray);
+    return shade(ray, dlen, hit, info, key, depth, crossings, weight, stats);
+}
+
+void WhittedIntegrator::radiance_packet(std::span<const Ray> rays, std::span<const SampleKey> keys, std::span<RGB> out,
+                                        RayStats& stats) const {
+    if (!m_scene.traces_packets()) {
+        for (std::size_t i = 0; i < rays.size(); ++i) out[i] = radiance(rays[i], keys[i], stats);
+        return;
+    }
+    // trace() at depth 0 for each ray, the scene asked about the rays with a direction all at once.
+    constexpr std::size_t kChunk = 16;
+    std::array<Ray, kChunk> traced;
+    std::array<std::size_t, kChunk> index;
+    std::array<SurfaceHit, kChunk> hits;
+    std::array<SurfaceInfo, kChunk> infos;
+    std::array<std::uint8_t, kChunk> found;
+    std::array<float, kChunk> lengths;
+    std::array<std::uint8_t, kChunk * kPacketLights> known;
+    std::array<Ray, kChunk> shadows;
+    std::array<std::size_t, kChunk> which;
+    std::array<std::uint8_t, kChunk> blocked;
+    for (std::size_t first = 0; first < rays.size(); first += kChunk) {
+        const std::size_t end = std::min(rays.size(), first + kChunk);
+        std::size_t n = 0;
+        for (std::size_t i = first; i < end; ++i) {
+            const float dlen = glm::length(rays[i].direction);
+            if (!(dlen > 0.0f) || !std::isfinite(dlen)) {
+                out[i] = {};
+                continue;
+            }
+            traced[n] = rays[i];
+            lengths[n] = dlen;
+            hits[n] = SurfaceHit{};
+            index[n++] = i;
+        }
+        m_scene.intersect_surface_packet(std::span<const Ray>(traced.data(), n), std::span<SurfaceHit>(hits.data(), n),
+                                         std::span<SurfaceInfo>(infos.data(), n),
+                                         std::span<std::uint8_t>(found.data(), n));
+        // The first shadow segment from each hit towards each of the first kPacketLights lights that take no random
+        // number (point, spot, directional lights), the hits' segments to one light together: the very ray shade()
+        // would trace, for the hits whose shading will ask (a surface lit directly, the light above it).
+        known.fill(kNotTraced);
+        for (std::size_t j = 0; j < std::min(m_entries.size(), kPacketLights); ++j) {
+            const LightEntry& light = m_entries[j];
+            if (light.sample_count != 1 || light.uses_random_sample) continue;
+            std::size_t count = 0;
+            for (std::size_t k = 0; k < n; ++k) {
+                if (!found[k] || !infos[k].material->reflects_direct_light()) continue;
+                const LightSample s = light.light->sample(hits[k].point, 0, Vec2(0.5f), m_options.convention);
+                Normal3 ng = infos[k].flags.reversed ? -hits[k].geometric_normal : hits[k].geometric_normal;
+                if (!(glm::dot(traced[k].direction / lengths[k], ng) < 0.0f)) ng = -ng;
+                if (s.arriving.is_black() || !(glm::dot(s.wi, ng) > 0.0f)) continue;
+                shadows[count] = s.at_infinity ? spawn_ray(hits[k], s.wi) : spawn_ray_to(hits[k], s.position);
+                which[count++] = k;
+            }
+            if (count == 0) continue;
+            m_scene.occluded_packet(std::span<const Ray>(shadows.data(), count),
+                                    std::span<std::uint8_t>(blocked.data(), count));
+            for (std::size_t c = 0; c < count; ++c) known[which[c] * kPacketLights + j] = blocked[c];
+        }
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t i = index[k];
+            out[i] = found[k] ? shade(rays[i], lengths[k], hits[k], infos[k], keys[i], 0, 0, 1.0f, stats,
+                                      known.data() + k * kPacketLights)
+                              : escaped(rays[i]);
+        }
+    }
+}
+
+std::uint8_t WhittedIntegrator::known_for(const std::uint8_t* known, std::size_t light) {
+    return known && light < kPacketLights ? known[light] : kNotTraced;
+}
+
+[[gnu::always_inline]] inline RGB WhittedIntegrator::shade(const Ray& ray, float dlen, const SurfaceHit& hit,
+                                                           const SurfaceInfo& info, const SampleKey& key, int depth,
+                                                           int crossings, float weight, RayStats& stats,
+                                                           const std::uint8_t* known) const {
     const Material& material = *info.material;
     const Vec3 d = ray.direction / dlen;
     const Vec3 wo = -d;
@@ -141,7 +226,9 @@ RGB WhittedIntegrator::trace(const Ray& ray, const SampleKey& key, int depth, in
                 if (s.arriving.is_black() || !(glm::dot(s.wi, ng) > 0.0f)) continue;
                 const RGB f = material.direct(t, wo_local, frame.to_local(s.wi), m_options.convention);
                 if (f.is_black()) continue;
-                L += f * s.arriving * transmittance(hit, s, stats);
+                L +=
+                    f * s.arriving *
+                    transmittance(hit, s, stats, known_for(known, static_cast<std::size_t>(&light - m_entries.data())));
             }
         }
     }

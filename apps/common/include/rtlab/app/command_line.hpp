@@ -47,6 +47,7 @@ struct CommonOptions {
     std::optional<std::uint64_t> seed;
     std::optional<std::string> tonemap;  ///< a tone operator name or "none"
     bool quiet = false;
+    bool no_packets = false;  ///< --no-packets: one camera sample at a time (RenderSettings::packets false)
     std::vector<std::filesystem::path> data_dirs;
 
     int threads_or_all() const { return threads.value_or(0); }
@@ -88,7 +89,7 @@ public:
     void add_positionals(const std::string& name, std::vector<std::filesystem::path>& target, const std::string& help);
 
     /// Adds -o, --width, --height, --aa, --spp, --aa-threshold, --aa-depth, --depth, --threads, --seed,
-    /// --tonemap (one of `tone_operators` or none), --quiet and --data-dir, bound to `options`.
+    /// --tonemap (one of `tone_operators` or none), --quiet, --no-packets and --data-dir, bound to `options`.
     void add_common(CommonOptions& options, const std::vector<std::string>& tone_operators);
 
     /// Parses and checks the command line. Returns nothing when the app should go on; else its exit status:

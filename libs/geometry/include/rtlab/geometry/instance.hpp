@@ -23,8 +23,12 @@ public:
     using Shape::uv_footprint;
     std::optional<UvFootprint> uv_footprint(const Mat4& to_world) const override;
 
-private:
+    /// intersect() in two steps, for a caller that traces the inner shape itself (a scene's packets of rays): the
+    /// ray the inner shape is asked about, and the hit record made from the inner shape's hit `local` for it.
     Ray to_object(const Ray& ray) const;
+    void finish_hit(const Ray& ray, const SurfaceHit& local, SurfaceHit& hit) const;
+
+private:
     std::shared_ptr<const Shape> m_shape;
     Mat4 m_to_world, m_to_object;
     Mat3 m_normal_to_world;  // inverse transpose of the linear part

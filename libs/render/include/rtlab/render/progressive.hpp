@@ -37,6 +37,9 @@ struct ProgressiveSettings {
     std::uint32_t block_samples = kDefaultBlockSamples;
     int tile_size = 0;  ///< as RenderSettings::tile_size (0: auto_tile_size)
     int threads = 0;    ///< 0: as many as the machine has
+    /// Groups of samples go to RadianceSource::radiance_batch; false: one at a time to sample_radiance() (the same
+    /// image; for measurements).
+    bool packets = true;
 };
 
 /// \brief A finished tile of a pass: its pixels x0 <= x < x1, y0 <= y < y1 now hold every sample below

@@ -45,6 +45,10 @@ public:
     RGB radiance(const Ray& ray, const SampleKey& key, RayCounters& counters) const override {
         return m_integrator.radiance(ray, key, counters);
     }
+    /// The group's camera rays through WhittedIntegrator::radiance_packet, in 4 x 2 pixel tiles where the group
+    /// spans two rows.
+    void radiance_batch(std::span<const CameraSample> samples, std::span<RGB> out,
+                        RayCounters& counters) const override;
 
 private:
     const WhittedIntegrator& m_integrator;

@@ -25,6 +25,11 @@ struct RenderSettings {
     /// alone (auto_tile_size), never from the thread count, so that ray counts do not depend on threads.
     int tile_size = 0;
     int threads = 0;  ///< 0: as many as the machine has (TBB's default)
+    /// The fixed patterns (none, grid, random, jittered) and sobol hand the radiance source groups of coherent
+    /// samples, one sample index over up to two pixel rows of a tile (RadianceSource::radiance_batch; a fixed
+    /// pattern's samples with the independent stream of their key); false: one sample at a time (radiance(), or
+    /// sample_radiance() for sobol), for measurements. The image is the same either way.
+    bool packets = true;
 };
 
 /// The tile edge for tile_size 0: the largest of 64, 32 and 16 pixels that still cuts the image into at least

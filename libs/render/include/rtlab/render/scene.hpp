@@ -6,7 +6,9 @@
 #include <rtlab/shading/scene_query.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -71,6 +73,14 @@ public:
     /// A list's hit knows its object: no search by shape. Spheres of materials without textures skip their uv.
     bool intersect_surface(const Ray& ray, SurfaceHit& hit, SurfaceInfo& info) const override;
     ShadowHit shadow(const Ray& ray, bool check_opaque, SurfaceHit& hit, SurfaceInfo& info) const override;
+    /// The rays go through the meshes' accelerators together (MeshShape objects and Instances of one, and the flat
+    /// triangle tree), every other object one ray at a time, each ray meeting the objects in the single query's
+    /// order with its tmax: the answers are intersect_surface()'s and occluded()'s, bit for bit.
+    void intersect_surface_packet(std::span<const Ray> rays, std::span<SurfaceHit> hits, std::span<SurfaceInfo> infos,
+                                  std::span<std::uint8_t> found) const override;
+    void occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const override;
+    /// Whether some object's mesh (or the flat tree) traces packets.
+    bool traces_packets() const override;
 
     /// What answers intersect(): "list" or "kd-tree", for the statistics.
     std::string_view structure() const;

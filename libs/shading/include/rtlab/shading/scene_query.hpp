@@ -4,7 +4,9 @@
 #include <rtlab/geometry/shape.hpp>
 #include <rtlab/shading/material.hpp>
 
+#include <cstdint>
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -50,6 +52,18 @@ public:
     /// transmissive caster (intersect_transmissive(), uv and tangent left out as for intersect_surface()) with its
     /// info, or `clear`. The default runs the three queries.
     virtual ShadowHit shadow(const Ray& ray, bool check_opaque, SurfaceHit& hit, SurfaceInfo& info) const;
+
+    /// intersect_surface() of each of a group of rays, for rays traced together (camera rays, shadow rays towards
+    /// one point; best as 4 x 2 pixel tiles): found[i] = 1 and hits[i], infos[i] as intersect_surface(rays[i],
+    /// hits[i], infos[i]) leaves them, bit for bit, else found[i] = 0 (hits[i] and infos[i] as that query leaves
+    /// them on a miss). hits, infos and found hold at least rays.size() elements. The default asks one ray at a time.
+    virtual void intersect_surface_packet(std::span<const Ray> rays, std::span<SurfaceHit> hits,
+                                          std::span<SurfaceInfo> infos, std::span<std::uint8_t> found) const;
+    /// occluded() of each ray: blocked[i] = 1 or 0, as intersect_surface_packet.
+    virtual void occluded_packet(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
+    /// Whether the packet queries trace any rays together; false (the default): they ask one ray at a time, so a
+    /// caller may as well ask single queries.
+    virtual bool traces_packets() const { return false; }
 };
 
 /// \brief Shapes with their materials, every query by brute force: tests, and the "plain list" scene level.

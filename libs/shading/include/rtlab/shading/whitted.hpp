@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace rtlab {
@@ -47,6 +48,12 @@ public:
 
     /// Radiance arriving along -ray.direction at ray.origin.
     RGB radiance(const Ray& ray, const SampleKey& key, RayStats& stats) const;
+    /// out[i] = radiance(rays[i], keys[i]) for a group of coherent rays (camera rays, best as 4 x 2 pixel tiles),
+    /// bit for bit: their first hits come from the scene's packet query (SceneQuery::intersect_surface_packet).
+    void radiance_packet(std::span<const Ray> rays, std::span<const SampleKey> keys, std::span<RGB> out,
+                         RayStats& stats) const;
+    /// Whether radiance_packet traces rays together (SceneQuery::traces_packets); else it calls radiance() per ray.
+    bool traces_packets() const { return m_scene.traces_packets(); }
 
     /// The fraction of a light sample's light that reaches `from`: 0 if an opaque caster is in the way,
     /// else the product over the transmissive surfaces crossed in order of (1 - opacity) + opacity kt, and
@@ -58,6 +65,19 @@ public:
 private:
     RGB trace(const Ray& ray, const SampleKey& key, int depth, int crossings, float weight, RayStats& stats) const;
     RGB escaped(const Ray& ray) const;
+    /// trace() once the ray (of direction length dlen) has met `hit` on a surface of `info`. known: null, or per
+    /// light what the first shadow segment from this hit towards it met, traced beforehand (radiance_packet).
+    /// Inline, defined in whitted.cpp (its only caller): as a call of its own it cost the Whitted scene 2% more
+    /// instructions.
+    inline RGB shade(const Ray& ray, float dlen, const SurfaceHit& hit, const SurfaceInfo& info, const SampleKey& key,
+                     int depth, int crossings, float weight, RayStats& stats,
+                     const std::uint8_t* known = nullptr) const;
+    /// A first shadow segment's answer traced beforehand: kClear or kBlocked (by an opaque caster), or kNotTraced.
+    static constexpr std::uint8_t kClear = 0, kBlocked = 1, kNotTraced = 2;
+    /// Lights (the first ones) whose first shadow segments radiance_packet traces beforehand.
+    static constexpr std::size_t kPacketLights = 8;
+    static std::uint8_t known_for(const std::uint8_t* known, std::size_t light);
+    RGB transmittance(const SurfaceHit& from, const LightSample& light, RayStats& stats, std::uint8_t known) const;
 
     /// What the light loop asks every light at every hit, asked once here (the answers of a const light).
     struct LightEntry {
