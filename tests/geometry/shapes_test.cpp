@@ -39,6 +39,16 @@ void check_same_hit(const SurfaceHit& a, const SurfaceHit& b) {
     CHECK(a.front_face == b.front_face);
     CHECK(a.shape == b.shape);
 }
+float log_uniform(Rng& rng, float lo_exp, float hi_exp) {
+    return std::pow(10.0f, lo_exp + (hi_exp - lo_exp) * rng.uniform());
+}
+Vec3 random_direction(Rng& rng) {
+    for (;;) {
+        const Vec3 v(2.0f * rng.uniform() - 1.0f, 2.0f * rng.uniform() - 1.0f, 2.0f * rng.uniform() - 1.0f);
+        const float l = glm::length(v);
+        if (l > 0.1f && l <= 1.0f) return v / l;
+    }
+}
 
 }  // namespace
 
