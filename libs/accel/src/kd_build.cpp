@@ -17,6 +17,7 @@
 #include <cmath>
 #include <deque>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace rtlab {
@@ -49,6 +50,21 @@ struct Scratch {
     std::vector<std::uint32_t> moved;                         // by the node's slot, see Partition
     std::vector<std::uint32_t> below_clipped, above_clipped;  // slots in Partition::below / above
     std::array<std::vector<kd::Event>, 3> below_new, above_new;
+
+    // Lists grown past kKept are dropped once their node is split: a thread would otherwise hold the largest
+    // node's (the root's: hundreds of kB) after the build, and how many threads do varies from build to build.
+    // Reallocating them costs little beside such a node's split.
+    static constexpr std::size_t kKept = 1u << 12;
+    void release_large() {
+        const auto drop = [](auto& v) {
+            if (v.capacity() > kKept) std::remove_reference_t<decltype(v)>().swap(v);
+        };
+        drop(moved);
+        drop(below_clipped);
+        drop(above_clipped);
+        for (auto& v : below_new) drop(v);
+        for (auto& v : above_new) drop(v);
+    }
 };
 
 Scratch& thread_scratch() {
@@ -190,8 +206,12 @@ private:
         // quads), where the two halves' areas add up to the parent's and every such split looks a little
         // cheaper than a leaf -- the tree would then grow exponentially. The spatial strategies, which
         // ignore cost, need the rule on any overlapping input.
-        if (2 * (part.below.size() + part.above.size()) > 3 * prims.size()) return leaf(prims);
+        if (2 * (part.below.size() + part.above.size()) > 3 * prims.size()) {
+            thread_scratch().release_large();
+            return leaf(prims);
+        }
         auto [below_state, above_state] = m_strategy.child_states(std::move(state), part);
+        thread_scratch().release_large();
         std::vector<kd::Prim>().swap(prims);
         BuildNode* node = new_node();
         node->axis = split.axis;

@@ -102,7 +102,7 @@ void add_axis_events(std::span<const Prim> prims, int axis, std::vector<Event>& 
 
 }  // namespace
 
-constexpr std::size_t kKeptKeys = 1u << 13;
+constexpr std::size_t kKeptKeys = 1u << 11;
 
 void sorted_events(std::span<const Prim> prims, std::span<const std::uint32_t> slots,
                    std::array<std::vector<Event>, 3>& events) {
@@ -177,7 +177,7 @@ struct Candidates {
     }
 };
 
-constexpr std::size_t kKeptCandidates = 1u << 12;
+constexpr std::size_t kKeptCandidates = 1u << 10;
 
 Candidates& thread_candidates(int axis) {
     thread_local std::array<Candidates, 3> candidates;
