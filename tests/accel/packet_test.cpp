@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "camera_tiles.hpp"
 #include "test_meshes.hpp"
 
 #include <algorithm>
@@ -89,28 +90,6 @@ void check_kd_packets(const std::string& label, const TriangleMesh& mesh, const 
             }
         }
     }
-}
-
-// n x n pinhole rays from `eye` towards `target` over a square field of `width` at the target, in 4 x 2
-// pixel tiles (rays 0-3 the tile's upper row, 4-7 its lower one), as the renderer's coherent entry point
-// would give them. n must be a multiple of 4.
-std::vector<Ray> camera_tiles(const Point3& eye, const Point3& target, float width, int n, float tmax = kInfinity) {
-    const Vec3 forward = target - eye;
-    const Vec3 right = glm::normalize(
-        glm::cross(forward, std::abs(forward.y) < std::abs(forward.x) || std::abs(forward.y) < std::abs(forward.z)
-                                ? Vec3(0, 1, 0)
-                                : Vec3(1, 0, 0)));
-    const Vec3 up = glm::normalize(glm::cross(right, forward));
-    std::vector<Ray> rays;
-    for (int ty = 0; ty < n; ty += 2)
-        for (int tx = 0; tx < n; tx += 4)
-            for (int y = ty; y < ty + 2; ++y)
-                for (int x = tx; x < tx + 4; ++x) {
-                    const float sx = (static_cast<float>(x) + 0.5f) / static_cast<float>(n) - 0.5f;
-                    const float sy = 0.5f - (static_cast<float>(y) + 0.5f) / static_cast<float>(n);
-                    rays.push_back(Ray{eye, forward + width * (sx * right + sy * up), 0.0f, tmax});
-                }
-    return rays;
 }
 
 // Shadow rays from the closest hits of `primary` (in their order, misses left out) towards `light`,
@@ -193,7 +172,7 @@ TEST_CASE("kd packets answer as single rays in split planes along axes and grazi
                         Ray{lo + scale * Vec3(0.5f * static_cast<float>(i), 0.5f * static_cast<float>(j), 6.0f),
                             Vec3(zero, zero, -1.0f)});
         const std::vector<Ray> tiles =
-            camera_tiles(lo + scale * Vec3(2.0f, 2.5f, 12.0f), lo + scale * Vec3(2.0f), 5.0f * scale, 24);
+            test::camera_tiles(lo + scale * Vec3(2.0f, 2.5f, 12.0f), lo + scale * Vec3(2.0f), 5.0f * scale, 24);
         rays.insert(rays.end(), tiles.begin(), tiles.end());
         check_kd_packets("cube lattice at scale " + std::to_string(scale), lattice, rays,
                          {"kd-sah", "kd-sah-binned", "kd-sah-naive", "kd-median", "kd-midpoint"});
@@ -273,7 +252,7 @@ TEST_CASE("kd packets answer as single rays for camera tiles and shadow rays on 
             const Vec3 away = glm::normalize(Vec3(rng.uniform() - 0.5f, rng.uniform() - 0.5f, rng.uniform() - 0.5f));
             const Point3 eye = c + 1.5f * diag * away;
             const float field = view < 4 ? diag : 1e-5f * diag;
-            const std::vector<Ray> tiles = camera_tiles(eye, c, field, 32 / (view < 4 ? 1 : 4));
+            const std::vector<Ray> tiles = test::camera_tiles(eye, c, field, 32 / (view < 4 ? 1 : 4));
             rays.insert(rays.end(), tiles.begin(), tiles.end());
         }
         // Shadow rays from the hits towards a point above the mesh and one inside it.
@@ -328,7 +307,7 @@ TEST_CASE("packets of mixed octants and partial packets answer as single rays", 
     Rng rng(21);
     std::vector<Ray> rays;
     // Camera tiles centred on the sphere's centre: tiles at the middle straddle the octant boundaries.
-    const std::vector<Ray> tiles = camera_tiles(Point3(0.0f, 0.0f, 3.0f), Point3(0.0f), 2.0f, 16);
+    const std::vector<Ray> tiles = test::camera_tiles(Point3(0.0f, 0.0f, 3.0f), Point3(0.0f), 2.0f, 16);
     rays.insert(rays.end(), tiles.begin(), tiles.end());
     // Random rays: every packet of them mixes octants.
     for (int i = 0; i < 800 / kRayDivisor; ++i) {
@@ -340,7 +319,7 @@ TEST_CASE("packets of mixed octants and partial packets answer as single rays", 
 
 TEST_CASE("the other methods' packet queries give their single-ray answers", "[accel]") {
     const TriangleMesh sphere = test::icosphere(3);
-    std::vector<Ray> rays = camera_tiles(Point3(0.3f, 0.2f, 3.0f), Point3(0.0f), 2.5f, 16);
+    std::vector<Ray> rays = test::camera_tiles(Point3(0.3f, 0.2f, 3.0f), Point3(0.0f), 2.5f, 16);
     const std::vector<Ray> shadows = shadow_rays(*make_accelerator("brute", sphere), rays, Point3(1.0f, 3.0f, 2.0f));
     rays.insert(rays.end(), shadows.begin(), shadows.end());
     rays.push_back(Ray{Point3(0.0f, 0.0f, -3.0f), Vec3(0.0f)});

@@ -4,6 +4,7 @@
 // query gives to the object tested first), rays through vertices and edges, rays that start on a surface, grazing
 // and axis-parallel rays with +0 and -0 components, degenerate and bounded intervals; groups of sizes from 1 to 16
 // and beyond, camera tiles and rays of mixed octants; lists, kd-trees, and the flat tree of small meshes.
+#include "camera_tiles.hpp"
 #include "image_bytes.hpp"
 #include "scene_fixtures.hpp"
 #include "test_meshes.hpp"
@@ -80,23 +81,6 @@ Differences compare(const Scene& scene, std::span<const Ray> rays, std::size_t s
     return d;
 }
 
-// n x n camera rays from `eye` towards `target` over a square field of `width`, in 4 x 2 pixel tiles.
-std::vector<Ray> camera_tiles(const Point3& eye, const Point3& target, float width, int n) {
-    const Vec3 forward = target - eye;
-    const Vec3 right = glm::normalize(glm::cross(forward, Vec3(0, 1, 0)));
-    const Vec3 up = glm::normalize(glm::cross(right, forward));
-    std::vector<Ray> rays;
-    for (int ty = 0; ty < n; ty += 2)
-        for (int tx = 0; tx < n; tx += 4)
-            for (int y = ty; y < ty + 2; ++y)
-                for (int x = tx; x < tx + 4; ++x) {
-                    const float sx = (static_cast<float>(x) + 0.5f) / static_cast<float>(n) - 0.5f;
-                    const float sy = 0.5f - (static_cast<float>(y) + 0.5f) / static_cast<float>(n);
-                    rays.push_back(Ray{eye, forward + width * (sx * right + sy * up), 0.0f, kInfinity});
-                }
-    return rays;
-}
-
 // Objects that tie: the icosphere mesh as a MeshShape, an Instance of it under the identity and two Instances under
 // one transform (the same t on the same triangles), a coplanar grid with a quad in its plane, small meshes that
 // join the flat tree (two copies of a stacked-quads mesh at the same place), spheres, one of them around a mesh.
@@ -136,7 +120,7 @@ std::vector<SceneObject> tied_objects(const std::string& method) {
 std::vector<Ray> hard_rays(const Scene& scene) {
     std::vector<Ray> rays;
     for (const Point3& eye : {Point3(0.1f, 0.6f, 6.0f), Point3(-5.0f, 3.0f, 4.0f), Point3(4.0f, -0.5f, 3.0f)}) {
-        const std::vector<Ray> tiles = camera_tiles(eye, Point3(0.0f), 7.0f, 24);
+        const std::vector<Ray> tiles = test::camera_tiles(eye, Point3(0.0f), 7.0f, 24);
         rays.insert(rays.end(), tiles.begin(), tiles.end());
     }
     // Through the grid's vertices along -z (at whole coordinates in [0, 8]^2, z = -1), and along its diagonals.
