@@ -29,12 +29,24 @@ struct TileContext {
     std::vector<std::uint32_t>& samples;
 };
 
-/// One camera sample: the ray through `position` with the lens sample of `key`.
-RGB trace(const TileContext& c, Vec2 position, const SampleKey& key, RayCounters& counters) {
+/// One camera sample's ray: through `position` with the lens sample of `key`, counted.
+Ray camera_ray(const TileContext& c, Vec2 position, const SampleKey& key, RayCounters& counters) {
     const Vec2 lens = c.camera.uses_lens_sample() ? sample_uniform2(key, kLensDimension) : Vec2(0.5f);
-    const Ray ray = c.camera.generate_ray(position, lens);
     ++counters.camera;
+    return c.camera.generate_ray(position, lens);
+}
+
+/// One camera sample: the radiance along camera_ray().
+RGB trace(const TileContext& c, Vec2 position, const SampleKey& key, RayCounters& counters) {
+    const Ray ray = camera_ray(c, position, key, counters);
     return c.radiance.radiance(ray, key, counters);
+}
+
+/// A fixed pattern's pixel: the mean of its n samples' sum, and its sample count.
+void store_pixel(const TileContext& c, int x, int y, const RGB& sum, int n) {
+    c.image.at(x, y) = sum / static_cast<float>(n);
+    c.samples[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.image.width()) + static_cast<std::size_t>(x)] =
+        static_cast<std::uint32_t>(n);
 }
 
 /// Returns false when stopped before the tile was complete.
@@ -52,9 +64,7 @@ bool render_fixed_tile(const TileContext& c, const Tile& t, RayCounters& counter
                 key.sample = static_cast<std::uint32_t>(i);
                 sum += trace(c, Vec2(static_cast<float>(x), static_cast<float>(y)) + offset, key, counters);
             }
-            c.image.at(x, y) = sum / static_cast<float>(n);
-            c.samples[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.image.width()) +
-                      static_cast<std::size_t>(x)] = static_cast<std::uint32_t>(n);
+            store_pixel(c, x, y, sum, n);
         }
     }
     return true;
@@ -80,22 +90,16 @@ bool render_fixed_tile_groups(const TileContext& c, const Tile& t, RayCounters& 
                     SampleKey key{s.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(yy), 0, 0};
                     const Vec2 offset = pattern_sample(s.pattern, s.spp, i, key);
                     key.sample = static_cast<std::uint32_t>(i);
-                    const Vec2 lens = c.camera.uses_lens_sample() ? sample_uniform2(key, kLensDimension) : Vec2(0.5f);
                     const Vec2 position = Vec2(static_cast<float>(x), static_cast<float>(yy)) + offset;
-                    samples.push_back(CameraSample{c.camera.generate_ray(position, lens),
+                    samples.push_back(CameraSample{camera_ray(c, position, key, counters),
                                                    SampleStream(SampleSequence::independent, key)});
-                    ++counters.camera;
                 }
             c.radiance.radiance_batch(samples, std::span<RGB>(values.data(), samples.size()), counters);
             for (std::size_t k = 0; k < samples.size(); ++k) sums[k] += values[k];
         }
         std::size_t k = 0;
         for (int yy = y; yy < y1; ++yy)
-            for (int x = t.x0; x < t.x1; ++x, ++k) {
-                c.image.at(x, yy) = sums[k] / static_cast<float>(n);
-                c.samples[static_cast<std::size_t>(yy) * static_cast<std::size_t>(c.image.width()) +
-                          static_cast<std::size_t>(x)] = static_cast<std::uint32_t>(n);
-            }
+            for (int x = t.x0; x < t.x1; ++x, ++k) store_pixel(c, x, yy, sums[k], n);
     }
     return true;
 }
