@@ -34,9 +34,12 @@ AreaEmitter::AreaEmitter(EmitterShape shape, const RGB& radiance, bool two_sided
             // Sums in double so that a mesh of a million triangles keeps its small ones' share.
             double sum = 0.0;
             m_cdf.reserve(m_shape.triangles.size());
+            m_normals.reserve(m_shape.triangles.size());
             for (const auto& t : m_shape.triangles) {
-                sum += 0.5 * static_cast<double>(glm::length(glm::cross(t[1] - t[0], t[2] - t[0])));
+                const Vec3 n = glm::cross(t[1] - t[0], t[2] - t[0]);
+                sum += 0.5 * static_cast<double>(glm::length(n));
                 m_cdf.push_back(static_cast<float>(sum));
+                m_normals.push_back(glm::normalize(n));
             }
             m_area = static_cast<float>(sum);
             break;
@@ -66,8 +69,7 @@ AreaEmitter::SurfacePoint AreaEmitter::sample_area(const Vec2& u) const {
             const auto& t = m_shape.triangles[i];
             const float su = std::sqrt(ux);
             const float b0 = 1.0f - su, b1 = u.y * su;
-            const Vec3 n = glm::cross(t[1] - t[0], t[2] - t[0]);
-            return {b0 * t[0] + b1 * t[1] + (1.0f - b0 - b1) * t[2], glm::normalize(n)};
+            return {b0 * t[0] + b1 * t[1] + (1.0f - b0 - b1) * t[2], m_normals[i]};
         }
         case EmitterShape::Kind::disk: {
             const float r2i = m_shape.inner_radius * m_shape.inner_radius;

@@ -36,6 +36,9 @@ void LightSet::finish() {
 }
 
 const LightSet::Entry* LightSet::choose(float u) const {
+    // One entry (a lone light: the common case) is the search's answer for every u: its cumulative probability is
+    // 1 when it has power, and then so is its probability; 0 for both when not (or before finish()).
+    if (m_entries.size() == 1) return m_entries[0].probability > 0.0f ? &m_entries[0] : nullptr;
     if (m_cdf.empty() || !(m_cdf.back() > 0.0f)) return nullptr;
     // The first entry whose cumulative probability exceeds u; one of no power has none of the interval.
     const auto it = std::upper_bound(m_cdf.begin(), m_cdf.end(), u);

@@ -26,6 +26,7 @@ public:
 
     // Sampled: albedo / pi, cosine sampling.
     bool has_lobes() const override { return true; }
+    bool lobes_use_choice() const override { return false; }
     RGB lobe_eval(const SurfaceTerms& t, const Vec3&, const Vec3&, TransportMode) const override {
         return t.diffuse * kInvPi;
     }

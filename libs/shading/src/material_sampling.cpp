@@ -22,6 +22,11 @@ struct Mixture {
     float radiance_scale = 1.0f;        // (n_wo / n_wi)^2 for T in radiance mode
 };
 
+/// Whether the mixture is the model's own lobes alone, with weight 1 and chance 1 (no mirror, no refraction, no
+/// cut-out): the common case, whose eval, pdf and sample skip the mixture. mixture() gives exactly 1 there too:
+/// 1 * max(0, 1 - 0 - 0) = 1, and the chance is channel_mean(1) = 1 over a sum of 1 (3 * fl(1/3) rounds to 1).
+bool own_lobes_only(const SurfaceTerms& t) { return t.opacity == 1.0f && t.kr.is_black() && t.kt.is_black(); }
+
 Mixture mixture(const Material& material, const SurfaceTerms& t, const Vec3& wo, bool has_lobes) {
     Mixture m;
     const float a = t.opacity;
@@ -97,6 +102,7 @@ std::optional<LobeDraw> Material::own_sample(const SurfaceTerms& t, Vec3 wo, flo
 
 RGB Material::eval(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode mode) const {
     if (!has_lobes()) return {};
+    if (own_lobes_only(t)) return own_eval(t, wo, wi, mode);  // the weight is 1: the same bits
     const RGB w = mixture(*this, t, wo, true).weight[Mixture::own];
     if (w.is_black()) return {};
     return w * own_eval(t, wo, wi, mode);
@@ -104,9 +110,14 @@ RGB Material::eval(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, Transp
 
 float Material::pdf(const SurfaceTerms& t, const Vec3& wo, const Vec3& wi, TransportMode mode) const {
     if (!has_lobes()) return 0.0f;
+    if (own_lobes_only(t)) return own_pdf(t, wo, wi, mode);  // the chance is 1: the same bits
     const float chance = mixture(*this, t, wo, true).chance[Mixture::own];
     if (!(chance > 0.0f)) return 0.0f;
     return chance * own_pdf(t, wo, wi, mode);
+}
+
+bool Material::sample_uses_choice(const SurfaceTerms& t) const {
+    return !(has_lobes() && own_lobes_only(t)) || lobes_use_choice();
 }
 
 float Material::non_delta_chance(const SurfaceTerms& t, const Vec3& wo) const {
@@ -117,6 +128,19 @@ float Material::non_delta_chance(const SurfaceTerms& t, const Vec3& wo) const {
 std::optional<BsdfSample> Material::sample(const SurfaceTerms& t, const Vec3& wo, float uc, const Vec2& u,
                                            TransportMode mode) const {
     const bool lobes = has_lobes();
+    if (lobes && own_lobes_only(t)) {
+        // What the general case below does for a mixture of the own lobe alone at chance 1 and weight 1 (uc < 1
+        // is its own rescaled uc), without the multiplications by 1.
+        const std::optional<LobeDraw> draw = own_sample(t, wo, std::min(uc, 0x1.fffffep-1f), u, mode);
+        if (!draw) return std::nullopt;
+        BsdfSample s;
+        s.wi = draw->wi;
+        s.flags = draw->flags;
+        s.pdf = own_pdf(t, wo, s.wi, mode);
+        if (!(s.pdf > 0.0f)) return std::nullopt;
+        s.value = own_eval(t, wo, s.wi, mode) * (std::abs(s.wi.z) / s.pdf);
+        return s;
+    }
     const Mixture m = mixture(*this, t, wo, lobes);
     // Choose a lobe by uc and stretch the rest of uc over [0, 1) for the model's own choice.
     int lobe = -1;

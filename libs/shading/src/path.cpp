@@ -54,13 +54,20 @@ RGB PathIntegrator::path(const Ray& camera_ray, const SampleStream& stream, RayS
         L += beta * emitted_radiance(m_lights, m_options, ray, found, v, from, bsdf_pdf, specular);
         if (!found || depth >= m_options.max_depth) break;
         const auto bounce = static_cast<std::uint32_t>(depth);
-        // Pair 0 serves the light choice (x) and Russian roulette (y): drawn once.
-        const Vec2 u_choice = stream.get2d(path_pair(bounce, 0));
-        L += beta * sample_direct_light(m_scene, m_lights, m_options, v, u_choice.x, stream.get2d(path_pair(bounce, 1)),
-                                        stats);
+        // Pair 0 serves the light choice (x) and Russian roulette (y): drawn once, and only when one of them reads
+        // it (a pair costs about as much as a shading normal); so is pair 3's lobe choice. A number left undrawn is
+        // one nothing reads, so the image is the same bits.
+        const bool roulette =
+            m_options.roulette && depth + 1 >= m_options.roulette_depth && depth + 1 < m_options.max_depth;
+        const Material& material = *v.info.material;
+        const Vec2 u_choice = roulette || (m_lights.choice_uses_u() && material.reflects_direct_light())
+                                  ? stream.get2d(path_pair(bounce, 0))
+                                  : Vec2(0.0f);
+        const Vec2 u_light = material.reflects_direct_light() ? stream.get2d(path_pair(bounce, 1)) : Vec2(0.0f);
+        L += beta * sample_direct_light(m_scene, m_lights, m_options, v, u_choice.x, u_light, stats);
+        const float u_lobe = material.sample_uses_choice(v.terms) ? stream.get2d(path_pair(bounce, 3)).x : 0.0f;
         const std::optional<BsdfSample> bs =
-            v.info.material->sample(v.terms, v.wo_local, stream.get2d(path_pair(bounce, 3)).x,
-                                    stream.get2d(path_pair(bounce, 2)), TransportMode::radiance);
+            material.sample(v.terms, v.wo_local, u_lobe, stream.get2d(path_pair(bounce, 2)), TransportMode::radiance);
         if (!bs) break;
         beta *= bs->value;
         if (beta.is_black()) break;
@@ -69,7 +76,7 @@ RGB PathIntegrator::path(const Ray& camera_ray, const SampleStream& stream, RayS
         from = v.hit.point;
         // Roulette before a bounce that would add more than emission: one at max_depth would only end paths
         // that have a single emitted term left to add.
-        if (m_options.roulette && depth + 1 >= m_options.roulette_depth && depth + 1 < m_options.max_depth) {
+        if (roulette) {
             const float q = std::min(m_options.max_survival, beta.max_component());
             if (!(u_choice.y < q)) break;
             beta *= 1.0f / q;

@@ -83,14 +83,22 @@ inline std::uint32_t reverse_bits(std::uint32_t x) {
 /// chosen here by measuring, over 20,000 seeds, that flips at depths 0 to 13 are unbiased and pairwise and
 /// three-wise uncorrelated between prefixes within sampling noise (a plain seed addition with fixed multipliers
 /// left the first levels strongly correlated).
-inline std::uint32_t owen_scramble(std::uint32_t x, std::uint64_t seed) {
-    std::uint32_t r = reverse_bits(x);
+inline std::uint32_t owen_scramble(std::uint32_t x, std::uint64_t seed);
+
+/// owen_scramble on reversed bits: owen_scramble(x, seed) = reverse_bits(owen_scramble_reversed(reverse_bits(x),
+/// seed)). A caller that holds its value reversed already (a van der Corput point is its index reversed) skips the
+/// two reversals, which cost about as much as the permutation.
+inline std::uint32_t owen_scramble_reversed(std::uint32_t r, std::uint64_t seed) {
     r += static_cast<std::uint32_t>(seed);
     r *= static_cast<std::uint32_t>(seed >> 32) | 1u;
     r ^= r * 0x6d2b79f6u;
     r *= 0x2c1b3c6du;
     r ^= r * 0x8a5cd78eu;
-    return reverse_bits(r);
+    return r;
+}
+
+inline std::uint32_t owen_scramble(std::uint32_t x, std::uint64_t seed) {
+    return reverse_bits(owen_scramble_reversed(reverse_bits(x), seed));
 }
 
 /// A 64-bit bijective mixer (xorshift-multiply rounds with constants different from sample_hash's), used to draw
@@ -114,9 +122,43 @@ inline std::array<std::uint32_t, 2> sobol_owen_pair_bits(std::uint64_t seed, std
             owen_scramble(sobol_sample(shuffled, 1), mix_seed(seed ^ 0xa4093822299f31d0ULL))};
 }
 
+/// kSobolByteTables of dimension 1 with every entry's bits reversed: reverse_bits(sobol_sample(i, 1)) by four
+/// lookups (reversal commutes with XOR).
+inline constexpr auto kSobolReversedByteTables = [] {
+    std::array<std::array<std::uint32_t, 256>, 4> t{};
+    for (std::size_t byte = 0; byte < 4; ++byte)
+        for (std::size_t value = 0; value < 256; ++value) {
+            const std::uint32_t x = kSobolByteTables[1][byte][value];
+            std::uint32_t r = 0;
+            for (int bit = 0; bit < 32; ++bit) r |= ((x >> bit) & 1u) << (31 - bit);
+            t[byte][value] = r;
+        }
+    return t;
+}();
+
+/// sobol_owen_pair_bits(seed, index), given reverse_bits(index): the same bits with three bit reversals instead of
+/// seven. Dimension 0 is van der Corput (sobol_sample(i, 0) = reverse_bits(i)), so its scramble takes the shuffled
+/// index as it is; dimension 1's point comes reversed from kSobolReversedByteTables.
+inline std::array<std::uint32_t, 2> sobol_owen_pair_bits_reversed_index(std::uint64_t seed,
+                                                                        std::uint32_t reversed_index) {
+    const std::uint32_t shuffled =
+        reverse_bits(owen_scramble_reversed(reversed_index, mix_seed(seed ^ 0x243f6a8885a308d3ULL)));
+    const auto& t = kSobolReversedByteTables;
+    const std::uint32_t y_reversed =
+        t[0][shuffled & 0xffu] ^ t[1][(shuffled >> 8) & 0xffu] ^ t[2][(shuffled >> 16) & 0xffu] ^ t[3][shuffled >> 24];
+    return {reverse_bits(owen_scramble_reversed(shuffled, mix_seed(seed ^ 0x13198a2e03707344ULL))),
+            reverse_bits(owen_scramble_reversed(y_reversed, mix_seed(seed ^ 0xa4093822299f31d0ULL)))};
+}
+
 /// The same point as floats in [0, 1)^2.
 inline Vec2 sobol_owen_pair(std::uint64_t seed, std::uint32_t index) {
-    const std::array<std::uint32_t, 2> p = sobol_owen_pair_bits(seed, index);
+    const std::array<std::uint32_t, 2> p = sobol_owen_pair_bits_reversed_index(seed, reverse_bits(index));
+    return {fraction_to_float(p[0]), fraction_to_float(p[1])};
+}
+
+/// sobol_owen_pair(seed, index) given reverse_bits(index) (SampleStream keeps its index so).
+inline Vec2 sobol_owen_pair_reversed_index(std::uint64_t seed, std::uint32_t reversed_index) {
+    const std::array<std::uint32_t, 2> p = sobol_owen_pair_bits_reversed_index(seed, reversed_index);
     return {fraction_to_float(p[0]), fraction_to_float(p[1])};
 }
 

@@ -53,13 +53,14 @@ public:
             const bool halves = sequence == SampleSequence::sobol_halves;
             const std::uint32_t half = halves ? (key.sample & 1u) : 0u;
             m_pixel_seed = sample_hash(pixel, kStreamDimensionBase + half);
-            m_index = halves ? key.sample >> 1 : key.sample;
+            m_reversed_index = reverse_bits(halves ? key.sample >> 1 : key.sample);
         }
     }
 
     /// Pair `pair` (dimensions 2 pair and 2 pair + 1), in [0, 1)^2.
     Vec2 get2d(std::uint32_t pair) const {
-        if (m_sequence != SampleSequence::independent) return sobol_owen_pair(mix_seed(m_pixel_seed + pair), m_index);
+        if (m_sequence != SampleSequence::independent)
+            return sobol_owen_pair_reversed_index(mix_seed(m_pixel_seed + pair), m_reversed_index);
         return sample_uniform2(m_key, kStreamDimensionBase + 2u * pair);
     }
     /// Dimension `dimension`, in [0, 1).
@@ -75,7 +76,8 @@ private:
     SampleKey m_key;
     SampleSequence m_sequence;
     std::uint64_t m_pixel_seed = 0;
-    std::uint32_t m_index = 0;  ///< the point of the (half's) sequence this sample takes
+    /// The point of the (half's) sequence this sample takes, its bits reversed (as the scramble reads it).
+    std::uint32_t m_reversed_index = 0;
 };
 
 }  // namespace rtlab

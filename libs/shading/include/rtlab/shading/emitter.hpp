@@ -120,7 +120,8 @@ private:
     RGB m_radiance;
     bool m_two_sided;
     float m_area = 0.0f;
-    std::vector<float> m_cdf;  // triangles: cumulative area, last = m_area
+    std::vector<float> m_cdf;        // triangles: cumulative area, last = m_area
+    std::vector<Normal3> m_normals;  // triangles: each one's unit front normal, worked out once
 };
 
 /// \brief Light from infinitely far away, by direction: what rays that escape the scene see, and a light the

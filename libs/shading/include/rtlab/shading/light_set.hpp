@@ -30,6 +30,8 @@ public:
 
     /// The emitter for u in [0, 1), or nullptr when no light has power.
     const Entry* choose(float u) const;
+    /// Whether choose() depends on u: false for a single entry, so an integrator may leave that number undrawn.
+    bool choice_uses_u() const { return m_entries.size() > 1; }
     /// The emitter of an emitting shape (the outermost shape a hit reports), or nullptr.
     const Entry* for_shape(const Shape* shape) const {
         const auto it = m_by_shape.find(shape);

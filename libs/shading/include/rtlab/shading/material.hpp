@@ -99,6 +99,9 @@ public:
     /// (a lobe that reaches below the horizon): the path ends there.
     std::optional<BsdfSample> sample(const SurfaceTerms& terms, const Vec3& wo, float uc, const Vec2& u,
                                      TransportMode mode) const;
+    /// Whether sample() reads uc for these terms: false when the mixture is the model's own lobes alone and the
+    /// model samples them without a choice (Lambert), so an integrator may leave that number undrawn.
+    bool sample_uses_choice(const SurfaceTerms& terms) const;
     /// The probability that sample() draws from the model's own lobes (the part eval() and pdf() describe) rather
     /// than from a delta lobe, for this wo; 0 without sampled lobes. An integrator that estimates the non-delta part
     /// by other means (photon density) and follows the delta lobes by sampling weighs by it.
@@ -138,6 +141,8 @@ protected:
     virtual bool has_lobes() const { return false; }
     /// Whether the model's lobes reach through the surface (a dielectric): then it gets both sides as they are.
     virtual bool lobes_transmit() const { return false; }
+    /// Whether lobe_sample() reads its uc (to choose among the model's parts); a model with one part may say no.
+    virtual bool lobes_use_choice() const { return true; }
     virtual RGB lobe_eval(const SurfaceTerms&, const Vec3&, const Vec3&, TransportMode) const { return {}; }
     virtual float lobe_pdf(const SurfaceTerms&, const Vec3&, const Vec3&, TransportMode) const { return 0.0f; }
     virtual std::optional<LobeDraw> lobe_sample(const SurfaceTerms&, const Vec3&, float, const Vec2&,
