@@ -94,6 +94,54 @@ TEST_CASE("sphere: huge and tiny scales and far offsets keep precision", "[shape
     }
 }
 
+TEST_CASE("sphere: lines just wide of it or just through it keep the full test's answer", "[shapes]") {
+    // The hard case for the cheap rejection of wide lines: perpendicular distances a hair above and below the
+    // radius, from near and far origins, at tiny and huge scales, with unnormalised directions. The reference is
+    // the full test (perpendicular, discriminant, stable roots) written out here as the sphere computes it.
+    auto full = [](const Point3& centre, float r, const Ray& ray, float& t) {
+        const Vec3 oc = ray.origin - centre;
+        const float a = glm::dot(ray.direction, ray.direction), b = glm::dot(oc, ray.direction);
+        const float c = glm::dot(oc, oc) - r * r;
+        if (b > 0.0f && c > 0.0f && ray.tmin >= 0.0f) return false;
+        const float perp = glm::length(oc - (b / a) * ray.direction);
+        const float disc = a * (r - perp) * (r + perp);
+        float t0, t1;
+        if (!geometry::stable_roots(a, b, c, disc, t0, t1)) return false;
+        if (t0 > ray.tmin && t0 < ray.tmax)
+            t = t0;
+        else if (t1 > ray.tmin && t1 < ray.tmax)
+            t = t1;
+        else
+            return false;
+        return true;
+    };
+    Rng rng(2026, 11);
+    int hits = 0, misses_seen = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const float scale = log_uniform(rng, -6.0f, 6.0f);
+        const Point3 centre = random_direction(rng) * (scale * log_uniform(rng, -3.0f, 3.0f));
+        const float r = scale * log_uniform(rng, -1.0f, 1.0f);
+        const Sphere sphere(centre, r);
+        // A line at r (1 + e) from the centre, e of either sign from 1e-8 to 1e-2.
+        const Vec3 towards = random_direction(rng);
+        Vec3 side = glm::cross(towards, random_direction(rng));
+        side /= glm::length(side);
+        const float e = (rng.uniform() < 0.5f ? -1.0f : 1.0f) * log_uniform(rng, -8.0f, -2.0f);
+        const Point3 closest = centre + side * (r * (1.0f + e));
+        const Point3 origin = closest - towards * (r * log_uniform(rng, -2.0f, 4.0f));
+        const Ray ray{origin, towards * log_uniform(rng, -3.0f, 3.0f), 0.0f, kInfinity};
+        float want_t = 0.0f, got_t = 0.0f;
+        const bool want = full(centre, r, ray, want_t);
+        INFO("ray " << k);
+        REQUIRE(sphere.intersect_distance(ray, got_t) == want);
+        REQUIRE(sphere.occluded(ray) == want);
+        if (want) REQUIRE(std::bit_cast<std::uint32_t>(got_t) == std::bit_cast<std::uint32_t>(want_t));
+        (want ? hits : misses_seen) += 1;
+    }
+    CHECK(hits > 5000);
+    CHECK(misses_seen > 5000);
+}
+
 TEST_CASE("sphere uv puts the north pole at v = 1 and is continuous in u", "[shapes]") {
     const Sphere s({0, 0, 0}, 1.0f);
     CHECK(must_hit(s, Ray{{0, 5, 0}, {0, -1, 0}}).uv.y == Approx(1.0f));

@@ -36,14 +36,6 @@ std::shared_ptr<const ToneOperator> make_tone_operator(const ToneRegistry& regis
 
 namespace {
 
-/// Clamps to [0, 1]; NaN to 0 (write_png would too, this keeps the rule in one visible place).
-Image clamp_display(const Image& hdr) {
-    Image out = hdr;
-    auto c = [](float v) { return v >= 0.0f ? std::min(v, 1.0f) : 0.0f; };
-    for (RGB& p : out.pixels()) p = RGB(c(p.r), c(p.g), c(p.b));
-    return out;
-}
-
 /// A name in the target's folder that no other writer in this or another process uses; it keeps the
 /// target's extension so a reader of a left-over file can tell what it is.
 std::filesystem::path temporary_path(const std::filesystem::path& path) {
@@ -75,9 +67,12 @@ void write_render_output(const Image& hdr, const std::filesystem::path& path, co
     if (hdr.empty()) throw Error(file_error_message(path, "cannot write an empty image"));
     if (variance && format != OutputFormat::exr)
         throw Error(file_error_message(path, "only an EXR file can carry a variance channel"));
+    // Without a tone operator the PNG needs no clamped copy: write_png's encoder gives every colour the clamp
+    // would change (NaN, below 0, above 1) the code of its clamped value, and the clamp leaves alpha as it is
+    // (rtlab-whitted at 1280x960: a 15 MB copy less per image).
     Image display;
-    if (format == OutputFormat::png) display = tone ? tone->apply(hdr, report) : clamp_display(hdr);
-    const Image& out = format == OutputFormat::png ? display : hdr;
+    if (format == OutputFormat::png && tone) display = tone->apply(hdr, report);
+    const Image& out = format == OutputFormat::png && tone ? display : hdr;
 
     const std::filesystem::path tmp = temporary_path(path);
     try {

@@ -160,19 +160,15 @@ public:
         if (m_tree) {
             for (std::size_t i = 0; i < n; ++i) objects[i] = m_tree->intersect(walks[i].r, hits[i]) ? kLookUp : kNone;
         } else {
-            // Runs of members one ray at a time, each up to a mesh that all rays meet together. A run starts with no
-            // sphere before it, so none of its members shares ray terms across the mesh.
-            std::size_t begin = 0;
-            for (std::size_t k = 0; k <= m_list.size(); ++k) {
-                if (k < m_list.size() && !m_list[k].mesh) continue;
-                if (begin < k)
+            // A run starts with no sphere before it, so none of its members shares ray terms across a mesh.
+            for_each_run(
+                [&](std::size_t begin, std::size_t end) {
                     for (std::size_t i = 0; i < n; ++i) {
                         Sphere::RayTerms terms;
-                        for (std::size_t j = begin; j < k; ++j) step(m_list[j], walks[i], terms, hits[i]);
+                        for (std::size_t j = begin; j < end; ++j) step(m_list[j], walks[i], terms, hits[i]);
                     }
-                if (k < m_list.size()) mesh_packet(m_list[k], std::span<ListWalk>(walks.data(), n), hits);
-                begin = k + 1;
-            }
+                },
+                [&](const SetMember& m) { mesh_packet(m, std::span<ListWalk>(walks.data(), n), hits); });
             for (std::size_t i = 0; i < n; ++i) objects[i] = finish(rays[i], walks[i], hits[i], for_shading);
         }
         for (std::size_t i = 0; i < n; ++i)
@@ -196,15 +192,13 @@ public:
                 if (!blocked[i]) blocked[i] = m_tree->occluded(rays[i]) ? 1 : 0;
             return;
         }
-        std::size_t begin = 0;
-        for (std::size_t k = 0; k <= m_list.size(); ++k) {
-            if (k < m_list.size() && !m_list[k].mesh) continue;
-            if (begin < k)
+        for_each_run(
+            [&](std::size_t begin, std::size_t end) {
                 for (std::size_t i = 0; i < n; ++i)
-                    if (!blocked[i]) blocked[i] = occluded_range(rays[i], begin, k) ? 1 : 0;
-            if (k < m_list.size()) {
+                    if (!blocked[i]) blocked[i] = occluded_range(rays[i], begin, end) ? 1 : 0;
+            },
+            [&](const SetMember& m) {
                 // The rays still open, in their order, through the mesh's accelerator.
-                const SetMember& m = m_list[k];
                 std::array<Ray, kPacketChunk> open;
                 std::array<std::uint8_t, kPacketChunk> index, hit;
                 std::size_t count = 0;
@@ -217,9 +211,7 @@ public:
                     m.mesh->accelerator().occluded_packet(std::span<const Ray>(open.data(), count),
                                                           std::span<std::uint8_t>(hit.data(), count));
                 for (std::size_t c = 0; c < count; ++c) blocked[index[c]] = hit[c];
-            }
-            begin = k + 1;
-        }
+            });
     }
 
     std::size_t bytes() const {
@@ -231,6 +223,20 @@ public:
     }
 
 private:
+    // The list in order as runs of single-ray members, each handed to run(begin, end) as the index range [begin,
+    // end), and the mesh members between them, each handed to mesh(member): the packet queries trace the runs one
+    // ray at a time and the meshes with all rays together.
+    template <class Run, class Mesh>
+    void for_each_run(Run&& run, Mesh&& mesh) const {
+        std::size_t begin = 0;
+        for (std::size_t k = 0; k <= m_list.size(); ++k) {
+            if (k < m_list.size() && !m_list[k].mesh) continue;
+            if (begin < k) run(begin, k);
+            if (k < m_list.size()) mesh(m_list[k]);
+            begin = k + 1;
+        }
+    }
+
     // closest() over the objects outside the flat tree, for hits before tmax.
     std::size_t closest_other(const Ray& ray, float tmax, SurfaceHit& hit, bool for_shading) const {
         ListWalk w;

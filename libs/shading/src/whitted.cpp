@@ -28,6 +28,18 @@ Vec3 keep_on_side(Vec3 dir, const Normal3& ng, float side) {
     return glm::normalize(dir);
 }
 
+// The true normal of the hit turned towards where the ray (of unit direction d) came from, as shade() turns it.
+Normal3 facing_normal(const Vec3& d, const SurfaceHit& hit, const SurfaceInfo& info) {
+    const Normal3 ng = info.flags.reversed ? -hit.geometric_normal : hit.geometric_normal;
+    return glm::dot(d, ng) < 0.0f ? ng : -ng;
+}
+
+// Whether a light sample brings light to the side of the surface ng (facing the viewer) points to: light from below
+// the true surface would have to pass through it.
+bool lights_surface(const LightSample& s, const Normal3& ng) {
+    return !s.arriving.is_black() && glm::dot(s.wi, ng) > 0.0f;
+}
+
 }  // namespace
 
 WhittedIntegrator::WhittedIntegrator(const SceneQuery& scene, std::vector<std::shared_ptr<const Light>> lights,
@@ -119,7 +131,7 @@ void WhittedIntegrator::radiance_packet(std::span<const Ray> rays, std::span<con
     std::array<SurfaceInfo, kChunk> infos;
     std::array<std::uint8_t, kChunk> found;
     std::array<float, kChunk> lengths;
-    std::array<std::uint8_t, kChunk * kPacketLights> known;
+    std::array<KnownLight, kChunk * kPacketLights> known;
     std::array<Ray, kChunk> shadows;
     std::array<std::size_t, kChunk> which;
     std::array<std::uint8_t, kChunk> blocked;
@@ -140,27 +152,32 @@ void WhittedIntegrator::radiance_packet(std::span<const Ray> rays, std::span<con
         m_scene.intersect_surface_packet(std::span<const Ray>(traced.data(), n), std::span<SurfaceHit>(hits.data(), n),
                                          std::span<SurfaceInfo>(infos.data(), n),
                                          std::span<std::uint8_t>(found.data(), n));
-        // The first shadow segment from each hit towards each of the first kPacketLights lights that take no random
-        // number (point, spot, directional lights), the hits' segments to one light together: the very ray shade()
-        // would trace, for the hits whose shading will ask (a surface lit directly, the light above it).
-        known.fill(kNotTraced);
-        for (std::size_t j = 0; j < std::min(m_entries.size(), kPacketLights); ++j) {
+        // Each of the first kPacketLights lights that take no random number (point, spot, directional lights) sampled
+        // at each hit whose shading will ask (a surface lit directly), as shade() would, and the first shadow
+        // segments of the samples that light their surfaces traced together: shade() takes both as they are.
+        const std::size_t packet_lights = std::min(m_entries.size(), kPacketLights);
+        for (std::size_t j = 0; j < packet_lights; ++j) {
             const LightEntry& light = m_entries[j];
-            if (light.sample_count != 1 || light.uses_random_sample) continue;
+            if (light.sample_count != 1 || light.uses_random_sample) {
+                for (std::size_t k = 0; k < n; ++k) known[k * kPacketLights + j].sampled = false;
+                continue;
+            }
             std::size_t count = 0;
             for (std::size_t k = 0; k < n; ++k) {
-                if (!found[k] || !infos[k].material->reflects_direct_light()) continue;
-                const LightSample s = light.light->sample(hits[k].point, 0, Vec2(0.5f), m_options.convention);
-                Normal3 ng = infos[k].flags.reversed ? -hits[k].geometric_normal : hits[k].geometric_normal;
-                if (!(glm::dot(traced[k].direction / lengths[k], ng) < 0.0f)) ng = -ng;
-                if (s.arriving.is_black() || !(glm::dot(s.wi, ng) > 0.0f)) continue;
-                shadows[count] = s.at_infinity ? spawn_ray(hits[k], s.wi) : spawn_ray_to(hits[k], s.position);
+                KnownLight& kl = known[k * kPacketLights + j];
+                kl.sampled = found[k] && infos[k].material->reflects_direct_light();
+                if (!kl.sampled) continue;
+                kl.sample = light.light->sample(hits[k].point, 0, Vec2(0.5f), m_options.convention);
+                kl.lit = lights_surface(kl.sample, facing_normal(traced[k].direction / lengths[k], hits[k], infos[k]));
+                if (!kl.lit) continue;
+                shadows[count] = kl.sample.at_infinity ? spawn_ray(hits[k], kl.sample.wi)
+                                                       : spawn_ray_to(hits[k], kl.sample.position);
                 which[count++] = k;
             }
             if (count == 0) continue;
             m_scene.occluded_packet(std::span<const Ray>(shadows.data(), count),
                                     std::span<std::uint8_t>(blocked.data(), count));
-            for (std::size_t c = 0; c < count; ++c) known[which[c] * kPacketLights + j] = blocked[c];
+            for (std::size_t c = 0; c < count; ++c) known[which[c] * kPacketLights + j].shadow = blocked[c];
         }
         for (std::size_t k = 0; k < n; ++k) {
             const std::size_t i = index[k];
@@ -171,21 +188,17 @@ void WhittedIntegrator::radiance_packet(std::span<const Ray> rays, std::span<con
     }
 }
 
-std::uint8_t WhittedIntegrator::known_for(const std::uint8_t* known, std::size_t light) {
-    return known && light < kPacketLights ? known[light] : kNotTraced;
-}
-
 [[gnu::always_inline]] inline RGB WhittedIntegrator::shade(const Ray& ray, float dlen, const SurfaceHit& hit,
                                                            const SurfaceInfo& info, const SampleKey& key, int depth,
                                                            int crossings, float weight, RayStats& stats,
-                                                           const std::uint8_t* known) const {
+                                                           const KnownLight* known) const {
     const Material& material = *info.material;
     const Vec3 d = ray.direction / dlen;
     const Vec3 wo = -d;
 
     Normal3 ng = info.flags.reversed ? -hit.geometric_normal : hit.geometric_normal;
     Normal3 ns = info.flags.reversed ? -hit.shading_normal : hit.shading_normal;
-    const bool entering = glm::dot(d, ng) < 0.0f;
+    const bool entering = glm::dot(d, ng) < 0.0f;  // as facing_normal() decides
     // Both sides shade: turn the normals towards the viewer. A shading normal still facing away (a smooth
     // normal at a silhouette) gives way to the true one.
     if (!entering) {
@@ -216,19 +229,23 @@ std::uint8_t WhittedIntegrator::known_for(const std::uint8_t* known, std::size_t
         SampleKey here = key;  // children get the caller's key and add their own depth
         here.bounce += static_cast<std::uint32_t>(depth);
         std::uint32_t dim = kLightDimension;
-        for (const LightEntry& light : m_entries) {
+        for (std::size_t j = 0; j < m_entries.size(); ++j) {
+            const LightEntry& light = m_entries[j];
             L += t.diffuse * light.ambient;
+            // radiance_packet's sample (a light taking one sample without a random number) and its shadow answer.
+            const KnownLight* pre = known && j < kPacketLights && known[j].sampled ? &known[j] : nullptr;
             const int n = light.sample_count;
             for (int i = 0; i < n; ++i, dim += 2) {
-                const Vec2 u = light.uses_random_sample ? sample_uniform2(here, dim) : Vec2(0.5f);
-                const LightSample s = light.light->sample(hit.point, i, u, m_options.convention);
-                // Light from below the true surface would have to pass through it.
-                if (s.arriving.is_black() || !(glm::dot(s.wi, ng) > 0.0f)) continue;
+                LightSample computed;
+                if (!pre) {
+                    const Vec2 u = light.uses_random_sample ? sample_uniform2(here, dim) : Vec2(0.5f);
+                    computed = light.light->sample(hit.point, i, u, m_options.convention);
+                }
+                const LightSample& s = pre ? pre->sample : computed;
+                if (pre ? !pre->lit : !lights_surface(s, ng)) continue;
                 const RGB f = material.direct(t, wo_local, frame.to_local(s.wi), m_options.convention);
                 if (f.is_black()) continue;
-                L +=
-                    f * s.arriving *
-                    transmittance(hit, s, stats, known_for(known, static_cast<std::size_t>(&light - m_entries.data())));
+                L += f * s.arriving * transmittance(hit, s, stats, pre ? pre->shadow : kNotTraced);
             }
         }
     }

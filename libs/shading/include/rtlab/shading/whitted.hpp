@@ -65,18 +65,29 @@ public:
 private:
     RGB trace(const Ray& ray, const SampleKey& key, int depth, int crossings, float weight, RayStats& stats) const;
     RGB escaped(const Ray& ray) const;
+    /// A first shadow segment's answer traced beforehand: kClear or kBlocked (by an opaque caster), or kNotTraced.
+    static constexpr std::uint8_t kClear = 0, kBlocked = 1, kNotTraced = 2;
+    /// What radiance_packet found beforehand for one hit and one light: the light's sample (`sampled`) and, for a
+    /// sample that lights the surface (`lit`), what its first shadow segment met (kClear or kBlocked).
+    struct KnownLight {
+        // Left unset until radiance_packet samples the light: its table holds kPacketLights entries a hit, and
+        // setting them all up front cost the bunny scene more than the second sample saved.
+        KnownLight() {}
+        union {
+            LightSample sample;
+        };
+        bool sampled;
+        bool lit;
+        std::uint8_t shadow;
+    };
     /// trace() once the ray (of direction length dlen) has met `hit` on a surface of `info`. known: null, or per
-    /// light what the first shadow segment from this hit towards it met, traced beforehand (radiance_packet).
+    /// light (the first kPacketLights) what radiance_packet found for this hit beforehand, used as it is.
     /// Inline, defined in whitted.cpp (its only caller): as a call of its own it cost the Whitted scene 2% more
     /// instructions.
     inline RGB shade(const Ray& ray, float dlen, const SurfaceHit& hit, const SurfaceInfo& info, const SampleKey& key,
-                     int depth, int crossings, float weight, RayStats& stats,
-                     const std::uint8_t* known = nullptr) const;
-    /// A first shadow segment's answer traced beforehand: kClear or kBlocked (by an opaque caster), or kNotTraced.
-    static constexpr std::uint8_t kClear = 0, kBlocked = 1, kNotTraced = 2;
-    /// Lights (the first ones) whose first shadow segments radiance_packet traces beforehand.
+                     int depth, int crossings, float weight, RayStats& stats, const KnownLight* known = nullptr) const;
+    /// Lights (the first ones) whose samples and first shadow segments radiance_packet works out beforehand.
     static constexpr std::size_t kPacketLights = 8;
-    static std::uint8_t known_for(const std::uint8_t* known, std::size_t light);
     RGB transmittance(const SurfaceHit& from, const LightSample& light, RayStats& stats, std::uint8_t known) const;
 
     /// What the light loop asks every light at every hit, asked once here (the answers of a const light).
