@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include "agreement.hpp"
+#include "sample_scale.hpp"
 #include "test_meshes.hpp"
 
 #include <algorithm>
@@ -21,12 +22,16 @@ using namespace rtlab;
 namespace {
 
 // Debug and sanitizer builds trace a quarter of the rays: the sets keep their hard cases, the run stays
-// short.
+// short. Sanitizer builds also take the big meshes at a quarter of their triangles (kBigGrid, kBigIcosphere):
+// their builds, not the rays, took most of a minute each there.
 #if !defined(NDEBUG) || defined(__SANITIZE_ADDRESS__)
 constexpr int kRayDivisor = 4;
 #else
 constexpr int kRayDivisor = 1;
 #endif
+
+constexpr int kBigGrid = test::kSanitized ? 112 : 224;   // squares a side: 100,352 triangles (25,088)
+constexpr int kBigIcosphere = test::kSanitized ? 5 : 6;  // subdivisions: 81,920 triangles (20,480)
 
 constexpr float kSpacing = 1.0f / 128.0f;  // 2^-7: every vertex and edge midpoint is a float exactly
 
@@ -273,11 +278,11 @@ void check_icosphere(int subdivisions, int count, const std::vector<std::string>
 }  // namespace
 
 TEST_CASE("grid vertices and edge midpoints hit obliquely on split planes with +0 and -0", "[accel]") {
-    check_grid(224, 60000 / kRayDivisor, kMethods);  // 100,352 triangles
+    check_grid(kBigGrid, 60000 / kRayDivisor, kMethods);
 }
 
 TEST_CASE("a closed icosphere hit at its vertices and edge midpoints", "[accel]") {
-    check_icosphere(6, 100000 / kRayDivisor, kMethods);  // 81,920 triangles
+    check_icosphere(kBigIcosphere, 100000 / kRayDivisor, kMethods);
 }
 
 // kd-sah-naive takes minutes on 100k triangles (O(N^2) per node): it gets the same sets, smaller.

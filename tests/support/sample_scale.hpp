@@ -1,5 +1,6 @@
 #pragma once
-// How much smaller the Monte Carlo tests make their sample counts in this build.
+// How much smaller the Monte Carlo tests make their sample counts, and the exactness tests their meshes, in this
+// build.
 
 namespace rtlab::test {
 
@@ -7,8 +8,10 @@ namespace rtlab::test {
 /// valid (only their power drops).
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
 inline constexpr int kSampleScale = 5;
+inline constexpr bool kSanitized = true;
 #else
 inline constexpr int kSampleScale = 1;
+inline constexpr bool kSanitized = false;
 #endif
 
 }  // namespace rtlab::test
