@@ -150,7 +150,9 @@ public:
         return other != kNone ? other : m_flat->complete(ray, found, hit);
     }
 
-    bool occluded(const Ray& ray) const { return (m_flat && m_flat->occluded(ray)) || occluded_other(ray); }
+    // The other objects first: the flat tree's small meshes are mostly a room's walls, which seldom block a shadow
+    // ray inside it (cornell_box_bunny: the bunny blocks, the box never does).
+    bool occluded(const Ray& ray) const { return occluded_other(ray) || (m_flat && m_flat->occluded(ray)); }
 
     /// closest() of up to kPacketChunk rays: the flat tree and the list's meshes trace them together, every other
     /// member one ray at a time, each ray meeting the members in closest()'s order with closest()'s tmax.
@@ -276,6 +278,10 @@ private:
             w.beta = b;
             w.deferred = &m;
         } else if (m.traced) {
+            // Every Instance's guard. Tried: the outer one's alone (cornell_box_bunny, callgrind): 25% more of the
+            // bunny's closest-hit rays and 53% more of its shadow rays walked its tree (the outer box holds the inner
+            // one turned by 200 degrees), +0.28 M walk instructions against -0.40 M guard ones; kept, as a walk's
+            // cache misses and mispredicts cost more than its instructions say (not timed).
             Ray r = w.r;
             for (std::size_t k = 0; k < m.placements; ++k) {
                 if (m.placed[k]->misses_bounds(r)) return;
