@@ -135,6 +135,7 @@ public:
     }
 
     bool is_tree() const { return m_tree.has_value(); }
+    bool empty() const { return !m_flat && !m_tree && m_list.empty(); }
     bool traces_packets() const { return m_flat || m_packet_members; }
     std::size_t flat_meshes() const { return m_flat ? m_flat->part_count() : 0; }
 
@@ -474,6 +475,9 @@ bool Scene::intersect_surface(const Ray& ray, SurfaceHit& hit, SurfaceInfo& info
 
 ShadowHit Scene::shadow(const Ray& ray, bool check_opaque, SurfaceHit& hit, SurfaceInfo& info) const {
     if (check_opaque && occluded(ray)) return ShadowHit::opaque;
+    // Most scenes have no transmissive caster: no walk set up for nothing (cornell_box_bunny: 36 instructions a
+    // shadow ray).
+    if (m_transmissive->empty()) return ShadowHit::clear;
     const std::size_t object = m_transmissive->closest(ray, hit, true);
     if (object == Set::kNone) return ShadowHit::clear;
     info = this->info(object, hit);
