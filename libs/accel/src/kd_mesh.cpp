@@ -99,10 +99,9 @@ private:
             const kd::PacketRay<Test> r(ray);
             if (!r.valid()) return false;
             // A tree that is one leaf (a few triangles: the Cornell box's walls and light in a scene's flat tree)
-            // is its root box clip and its leaf test, with no walk set up. The clip stays: it rejects a few rays
-            // lying on or along the triangles' planes that the leaf test would take (tests/render/scene_packet_test
-            // "ties between objects"), and the packets clip too. Every ray of the path tracer meets that tree twice:
-            // cornell_box_bunny render 29.1 M -> 27.9 M Ir (callgrind).
+            // is its root box clip and its leaf test, with no walk set up. The clip stays: it can reject a ray lying
+            // in or along the triangles' planes that the leaf test would take, and the packet walk clips too. Every
+            // ray of the path tracer meets that tree twice: cornell_box_bunny render 29.1 M -> 27.9 M Ir (callgrind).
             if (m_root_leaf) {
                 const KdNode& leaf = m_tree.nodes[0];
                 float t0, t1;
