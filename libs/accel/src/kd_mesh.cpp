@@ -102,18 +102,25 @@ private:
             // is its root box clip and its leaf test, with no walk set up. The clip stays: it can reject a ray lying
             // in or along the triangles' planes that the leaf test would take, and the packet walk clips too. Every
             // ray of the path tracer meets that tree twice: cornell_box_bunny render 29.1 M -> 27.9 M Ir (callgrind).
+            // The clip comes after the test, as it only decides whether a hit counts: most shadow rays inside the
+            // box find none there and skip it (27.73 M -> 27.52 M Ir).
             if (m_root_leaf) {
                 const KdNode& leaf = m_tree.nodes[0];
-                float t0, t1;
-                if (!BoxRay(ray).clip(m_tree.bounds, ray.tmax, t0, t1)) return false;
                 float closest = ray.tmax;
+                MeshHit found;
+                bool any;
 #if RTLAB_KD_HAVE_AVX2_LEAVES
                 if (m_packets.width() == 8)
-                    return kd::test_packets_avx2<Test, AnyHit>(m_packets, r, leaf.primitive_offset(),
-                                                               leaf.primitive_count(), closest, hit);
+                    any = kd::test_packets_avx2<Test, AnyHit>(m_packets, r, leaf.primitive_offset(),
+                                                              leaf.primitive_count(), closest, found);
+                else
 #endif
-                return kd::test_packets<Test, AnyHit, 4>(m_packets, r, leaf.primitive_offset(), leaf.primitive_count(),
-                                                         closest, hit);
+                    any = kd::test_packets<Test, AnyHit, 4>(m_packets, r, leaf.primitive_offset(),
+                                                            leaf.primitive_count(), closest, found);
+                float t0, t1;
+                if (!any || !BoxRay(ray).clip(m_tree.bounds, ray.tmax, t0, t1)) return false;
+                hit = found;
+                return true;
             }
 #if RTLAB_KD_HAVE_AVX2_LEAVES
             // Packets of 8: the walk stays in the baseline instruction set (it gains nothing from AVX2) and
