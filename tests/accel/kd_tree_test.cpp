@@ -357,3 +357,63 @@ TEST_CASE("kd-sah trees over clipped triangles are the same node for node on any
         CHECK(a.sah_cost == b.sah_cost);
     }
 }
+
+TEST_CASE("a kd-tree that is one leaf answers single rays as its packets do", "[kd]") {
+    // An open box of 10 triangles and a quad just under its top (the Cornell box's walls and light): kd-sah keeps
+    // them in one leaf, which single rays test without the walk, and without the root clip for origins inside.
+    TriangleMesh m;
+    const float lo = 0.0f, hi = 0.5f, top = 0.4999f;
+    auto quad = [&m](Point3 a, Point3 b, Point3 c, Point3 d) {
+        const auto base = static_cast<std::uint32_t>(m.positions.size());
+        m.positions.insert(m.positions.end(), {a, b, c, d});
+        m.triangles.push_back({base, base + 1, base + 2});
+        m.triangles.push_back({base, base + 2, base + 3});
+    };
+    quad({lo, lo, lo}, {hi, lo, lo}, {hi, lo, hi}, {lo, lo, hi});                      // floor
+    quad({lo, hi, lo}, {lo, hi, hi}, {hi, hi, hi}, {hi, hi, lo});                      // top
+    quad({lo, lo, hi}, {hi, lo, hi}, {hi, hi, hi}, {lo, hi, hi});                      // back
+    quad({lo, lo, lo}, {lo, lo, hi}, {lo, hi, hi}, {lo, hi, lo});                      // left
+    quad({hi, lo, lo}, {hi, hi, lo}, {hi, hi, hi}, {hi, lo, hi});                      // right
+    quad({0.2f, top, 0.2f}, {0.3f, top, 0.2f}, {0.3f, top, 0.3f}, {0.2f, top, 0.3f});  // light
+    for (const int width : kd_leaf_widths()) {
+        BuildOptions options;
+        options.leaf_width = width;
+        const auto tree = make_kd_tree("kd-sah", m, options);
+        REQUIRE(tree->stats().nodes == 1);
+        // Rays from inside, from the faces and edges, from outside, in the walls' planes, axis-parallel with +0 and
+        // -0, and with intervals that start or end before 0.
+        std::mt19937 rng(41);
+        std::uniform_real_distribution<float> u(-0.1f, 0.6f), d(-1.0f, 1.0f);
+        const float grid[] = {lo, 0.2f, 0.25f, top, hi, -0.1f, 0.6f};
+        std::vector<Ray> rays;
+        for (int i = 0; i < 4000; ++i) {
+            Point3 o(u(rng), u(rng), u(rng));
+            if (i % 3 == 1) o[i % 2] = grid[(i / 3) % 7];
+            Vec3 dir(d(rng), d(rng), d(rng));
+            if (i % 5 == 2) dir[i % 3] = (i % 2) ? 0.0f : -0.0f;
+            Ray r{o, dir};
+            if (i % 7 == 3) r.tmin = -0.5f;
+            if (i % 11 == 4) r.tmax = -0.01f;
+            if (i % 13 == 5) r.tmax = 0.3f;
+            rays.push_back(r);
+        }
+        std::vector<MeshHit> packet(rays.size());
+        std::vector<std::uint8_t> blocked(rays.size());
+        tree->intersect_packet(rays, packet);
+        tree->occluded_packet(rays, blocked);
+        int mismatches = 0, hits = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            MeshHit h;
+            const bool hit = tree->intersect(rays[i], h);
+            hits += hit;
+            if (hit != packet[i].hit() ||
+                (hit && (std::memcmp(&h.t, &packet[i].t, sizeof(float)) != 0 || h.primitive != packet[i].primitive ||
+                         std::memcmp(&h.u, &packet[i].u, sizeof(float)) != 0 ||
+                         std::memcmp(&h.v, &packet[i].v, sizeof(float)) != 0)))
+                ++mismatches;
+            if (tree->occluded(rays[i]) != (blocked[i] != 0)) ++mismatches;
+        }
+        CHECK(mismatches == 0);
+        CHECK(hits > 1000);  // 1,631 measured
+    }
+}

@@ -191,3 +191,53 @@ TEST_CASE("a scene with flat meshes renders the image of its meshes on their own
     CHECK(alone.stats.rays.refracted > 300);
     CHECK(alone.stats.rays.shadow > 3000);
 }
+
+TEST_CASE("a list walks meshes inside instances itself and answers as their shapes do", "[scene]") {
+    // A mesh inside two Instances (a scene file's mesh with "fit" and a "transform"), one inside an Instance on a
+    // BVH (no packets) and one placed directly: the list traces their accelerators itself, no virtual calls through
+    // the shapes, and must give each shape's own records, bit for bit, and its own occlusion answers.
+    auto objects = random_objects(12, 6, 29);
+    auto inner = std::make_shared<const Instance>(
+        ball(3, 1.0f, Point3(0.0f)), glm::scale(glm::rotate(Mat4(1.0f), 0.7f, Vec3(0.3f, 1.0f, 0.2f)), Vec3(0.6f)));
+    auto nested = std::make_shared<const Instance>(
+        inner, glm::translate(glm::rotate(Mat4(1.0f), 3.49f, Vec3(0, 1, 0)), Vec3(-1.5f, 1.0f, -8.0f)));
+    auto on_bvh = std::make_shared<const Instance>(
+        std::make_shared<const MeshShape>(std::make_shared<const TriangleMesh>(icosphere(2, 0.8f, Point3(0.0f))),
+                                          "bvh"),
+        glm::translate(Mat4(1.0f), Vec3(1.5f, 1.2f, -9.0f)));
+    auto direct = ball(3, 0.9f, Point3(0.0f, 2.5f, -11.0f));
+    for (const std::shared_ptr<const Shape>& shape :
+         std::initializer_list<std::shared_ptr<const Shape>>{nested, on_bvh, direct})
+        objects.push_back({shape, lambert(RGB(0.6f)), {}, "mesh"});
+    const Scene scene(objects, {kAlwaysList, 0});
+    REQUIRE(scene.structure() == "list");
+    std::mt19937 rng(31);
+    int mismatches = 0, mesh_hits = 0, blocked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray r = random_ray(rng);
+        // The list's order and ties: each object asked up to the nearest hit so far.
+        Ray walk = r;
+        SurfaceHit want;
+        bool hit = false, occluded = false;
+        for (const SceneObject& o : objects) {
+            SurfaceHit h;
+            if (o.shape->intersect(walk, h)) {
+                walk.tmax = h.t;
+                want = h;
+                want.shape = o.shape.get();
+                hit = true;
+            }
+            // Glass and the like let shadow rays through (intersect_transmissive's set).
+            if (o.flags.casts_shadows && !o.material->transmits_shadows()) occluded = occluded || o.shape->occluded(r);
+        }
+        SurfaceHit got;
+        if (scene.intersect(r, got) != hit || (hit && !same_record(want, got))) ++mismatches;
+        if (scene.occluded(r) != occluded) ++mismatches;
+        mesh_hits += hit && (want.shape == nested.get() || want.shape == on_bvh.get() || want.shape == direct.get());
+        blocked += occluded;
+    }
+    CHECK(mismatches == 0);
+    INFO("mesh hits " << mesh_hits << " blocked " << blocked);
+    CHECK(mesh_hits > 200);  // 321 measured
+    CHECK(blocked > 5000);   // 8,914
+}
