@@ -98,53 +98,51 @@ private:
         return accel::dispatch_triangle_test(m_packets.test(), [&]<TriangleTest Test>() {
             const kd::PacketRay<Test> r(ray);
             if (!r.valid()) return false;
-            // A tree that is one leaf (a few triangles: the Cornell box's walls and light in a scene's flat tree)
-            // is its root box clip and its leaf test, with no walk set up. The clip stays: it can reject a ray lying
-            // in or along the triangles' planes that the leaf test would take, and the packet walk clips too. Every
-            // ray of the path tracer meets that tree twice: cornell_box_bunny render 29.1 M -> 27.9 M Ir (callgrind).
-            // The clip comes after the test, as it only decides whether a hit counts: most shadow rays inside the
-            // box find none there and skip it (27.73 M -> 27.52 M Ir).
-            if (m_root_leaf) {
-                const KdNode& leaf = m_tree.nodes[0];
-                float closest = ray.tmax;
-                MeshHit found;
-                bool any;
-#if RTLAB_KD_HAVE_AVX2_LEAVES
-                if (m_packets.width() == 8)
-                    any = kd::test_packets_avx2<Test, AnyHit>(m_packets, r, leaf.primitive_offset(),
-                                                              leaf.primitive_count(), closest, found);
-                else
-#endif
-                    any = kd::test_packets<Test, AnyHit, 4>(m_packets, r, leaf.primitive_offset(),
-                                                            leaf.primitive_count(), closest, found);
-                if (!any) return false;
-                // An origin strictly inside the box with tmin <= 0 < tmax passes the clip whatever the direction
-                // (every near-plane distance is <= 0, every far one >= 0, neither NaN), so the rays that bounce
-                // inside a room skip it (27.52 M -> 27.24 M Ir).
-                const AABB& box = m_tree.bounds;
-                const Point3& o = ray.origin;
-                const bool inside = ray.tmin <= 0.0f && ray.tmax > 0.0f && box.lo.x < o.x && o.x < box.hi.x &&
-                                    box.lo.y < o.y && o.y < box.hi.y && box.lo.z < o.z && o.z < box.hi.z;
-                float t0, t1;
-                if (!inside && !BoxRay(ray).clip(box, ray.tmax, t0, t1)) return false;
-                hit = found;
-                return true;
-            }
+            // test_leaf(leaf, closest, found): the leaf test of kd_traverse, writing its hit to found.
+            const auto run = [&](auto test_leaf) {
+                if (m_root_leaf) return trace_root_leaf(ray, hit, test_leaf);
+                return kd_traverse<AnyHit>(
+                    m_tree, ray, [&](const KdNode& leaf, float& closest) { return test_leaf(leaf, closest, hit); });
+            };
 #if RTLAB_KD_HAVE_AVX2_LEAVES
             // Packets of 8: the walk stays in the baseline instruction set (it gains nothing from AVX2) and
             // calls the AVX2 leaf test, about once per ray.
             if (m_packets.width() == 8) {
-                return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest) {
+                return run([&](const KdNode& leaf, float& closest, MeshHit& found) {
                     return kd::test_packets_avx2<Test, AnyHit>(m_packets, r, leaf.primitive_offset(),
-                                                               leaf.primitive_count(), closest, hit);
+                                                               leaf.primitive_count(), closest, found);
                 });
             }
 #endif
-            return kd_traverse<AnyHit>(m_tree, ray, [&](const KdNode& leaf, float& closest) {
+            return run([&](const KdNode& leaf, float& closest, MeshHit& found) {
                 return kd::test_packets<Test, AnyHit, 4>(m_packets, r, leaf.primitive_offset(), leaf.primitive_count(),
-                                                         closest, hit);
+                                                         closest, found);
             });
         });
+    }
+
+    // trace() of a tree that is one leaf (a few triangles: the Cornell box's walls and light in a scene's flat tree):
+    // its root box clip and its leaf test, with no walk set up. The clip stays: it can reject a ray lying in or along
+    // the triangles' planes that the leaf test would take, and the packet walk clips too. Every ray of the path tracer
+    // meets that tree twice: cornell_box_bunny render 29.1 M -> 27.9 M Ir (callgrind). The clip comes after the
+    // test, as it only decides whether a hit counts: most shadow rays inside the box find none there and skip it
+    // (27.73 M -> 27.52 M Ir).
+    template <class LeafTest>
+    bool trace_root_leaf(const Ray& ray, MeshHit& hit, LeafTest& test_leaf) const {
+        float closest = ray.tmax;
+        MeshHit found;
+        if (!test_leaf(m_tree.nodes[0], closest, found)) return false;
+        // An origin strictly inside the box with tmin <= 0 < tmax passes the clip whatever the direction (every
+        // near-plane distance is <= 0, every far one >= 0, neither NaN), so the rays that bounce inside a room skip
+        // it (27.52 M -> 27.24 M Ir).
+        const AABB& box = m_tree.bounds;
+        const Point3& o = ray.origin;
+        const bool inside = ray.tmin <= 0.0f && ray.tmax > 0.0f && box.lo.x < o.x && o.x < box.hi.x && box.lo.y < o.y &&
+                            o.y < box.hi.y && box.lo.z < o.z && o.z < box.hi.z;
+        float t0, t1;
+        if (!inside && !BoxRay(ray).clip(box, ray.tmax, t0, t1)) return false;
+        hit = found;
+        return true;
     }
 
     static KdTreeData build(KdStrategy strategy, const TriangleMesh& mesh, const BuildOptions& options,

@@ -66,10 +66,9 @@ struct SetMember {
     const MeshShape* traced = nullptr;
     std::array<const Instance*, kMaxPlacements> placed{};
     std::size_t placements = 0;
-    // The shape when it is a MeshShape, or the MeshShape inside it when it is an Instance of one (then `instance`),
-    // and its accelerator's packets give its single rays' answers: packets of rays go through it together.
-    const MeshShape* mesh = nullptr;
-    const Instance* instance = nullptr;
+    // `traced` sits in at most one Instance and its accelerator's packets give its single rays' answers: packets of
+    // rays go through it together.
+    bool packets = false;
 };
 
 /// Rays a scene's packet queries hand to the structures at once (a group of more is taken in such chunks).
@@ -88,13 +87,11 @@ struct ListWalk {
     MeshHit triangle;                 // the deferred mesh's hit
 };
 
-/// The shape as a MeshShape whose accelerator's packets give its single rays' answers bit for bit: the kd-trees'
-/// (Embree's rtcIntersect8 may differ from rtcIntersect1 in the last bits of t).
-const MeshShape* packet_mesh(const Shape& shape) {
-    const auto* mesh = dynamic_cast<const MeshShape*>(&shape);
-    if (!mesh) return nullptr;
+/// True when the mesh's accelerator's packets give its single rays' answers bit for bit: the kd-trees' (Embree's
+/// rtcIntersect8 may differ from rtcIntersect1 in the last bits of t).
+bool packets_as_single_rays(const MeshShape& mesh) {
     static const std::vector<std::string> kd = kd_tree_methods();
-    return std::find(kd.begin(), kd.end(), mesh->accelerator().name()) != kd.end() ? mesh : nullptr;
+    return std::find(kd.begin(), kd.end(), mesh.accelerator().name()) != kd.end();
 }
 
 }  // namespace
@@ -130,7 +127,7 @@ public:
                 m_list[i].shares_centre =
                     m_list[i].sphere && prev && same_bits(prev->centre(), m_list[i].sphere->centre());
             }
-            m_packet_members = std::any_of(m_list.begin(), m_list.end(), [](const SetMember& m) { return m.mesh; });
+            m_packet_members = std::any_of(m_list.begin(), m_list.end(), [](const SetMember& m) { return m.packets; });
         }
     }
 
@@ -218,12 +215,12 @@ public:
                 std::size_t count = 0;
                 for (std::size_t i = 0; i < n; ++i) {
                     if (blocked[i]) continue;
-                    open[count] = m.instance ? m.instance->to_object(rays[i]) : rays[i];
+                    open[count] = packet_ray(m, rays[i]);
                     index[count++] = static_cast<std::uint8_t>(i);
                 }
                 if (count > 0)
-                    m.mesh->accelerator().occluded_packet(std::span<const Ray>(open.data(), count),
-                                                          std::span<std::uint8_t>(hit.data(), count));
+                    m.traced->accelerator().occluded_packet(std::span<const Ray>(open.data(), count),
+                                                            std::span<std::uint8_t>(hit.data(), count));
                 for (std::size_t c = 0; c < count; ++c) blocked[index[c]] = hit[c];
             });
     }
@@ -244,7 +241,7 @@ private:
     void for_each_run(Run&& run, Mesh&& mesh) const {
         std::size_t begin = 0;
         for (std::size_t k = 0; k <= m_list.size(); ++k) {
-            if (k < m_list.size() && !m_list[k].mesh) continue;
+            if (k < m_list.size() && !m_list[k].packets) continue;
             if (begin < k) run(begin, k);
             if (k < m_list.size()) mesh(m_list[k]);
             begin = k + 1;
@@ -284,12 +281,8 @@ private:
             // one turned by 200 degrees), +0.28 M walk instructions against -0.40 M guard ones; kept, as a walk's
             // cache misses and mispredicts cost more than its instructions say (not timed).
             Ray r = w.r;
-            for (std::size_t k = 0; k < m.placements; ++k) {
-                if (m.placed[k]->misses_bounds(r)) return;
-                r = m.placed[k]->to_object(r);
-            }
             MeshHit found;
-            if (!m.traced->accelerator().intersect(r, found)) return;
+            if (!to_traced_space(m, r) || !m.traced->accelerator().intersect(r, found)) return;
             w.r.tmax = found.t;
             w.triangle = found;
             w.deferred = &m;
@@ -305,15 +298,28 @@ private:
         w.found = &m;
     }
 
-    // step() of a mesh member (m.mesh) for a group of rays, through its accelerator's packets: each ray asks with
+    // The ray in the space of m's traced mesh, through each Instance in turn; false when it passes clear of one's
+    // bounds, and so misses the mesh.
+    static bool to_traced_space(const SetMember& m, Ray& r) {
+        for (std::size_t k = 0; k < m.placements; ++k) {
+            if (m.placed[k]->misses_bounds(r)) return false;
+            r = m.placed[k]->to_object(r);
+        }
+        return true;
+    }
+
+    // The ray a packet member's accelerator answers (no bounds guard: the rays of a packet go in together).
+    static Ray packet_ray(const SetMember& m, const Ray& r) { return m.placements ? m.placed[0]->to_object(r) : r; }
+
+    // step() of a packet member for a group of rays, through its accelerator's packets: each ray asks with
     // the tmax its walk has reached; finish() fills the record MeshShape::intersect() (through the Instance) fills.
     static void mesh_packet(const SetMember& m, std::span<ListWalk> walks) {
         const std::size_t n = walks.size();
         std::array<Ray, kPacketChunk> rays;
         std::array<MeshHit, kPacketChunk> found;
-        for (std::size_t i = 0; i < n; ++i) rays[i] = m.instance ? m.instance->to_object(walks[i].r) : walks[i].r;
-        m.mesh->accelerator().intersect_packet(std::span<const Ray>(rays.data(), n),
-                                               std::span<MeshHit>(found.data(), n));
+        for (std::size_t i = 0; i < n; ++i) rays[i] = packet_ray(m, walks[i].r);
+        m.traced->accelerator().intersect_packet(std::span<const Ray>(rays.data(), n),
+                                                 std::span<MeshHit>(found.data(), n));
         // Deferred as step() defers a mesh's hit: a nearer sphere that leaves out its uv or tangent must leave the
         // same bits there as the single query's.
         for (std::size_t i = 0; i < n; ++i) {
@@ -380,9 +386,7 @@ private:
                 if (m.sphere->intersect_distance(ray, terms, t)) return true;
             } else if (m.traced) {
                 Ray r = ray;
-                std::size_t k = 0;
-                for (; k < m.placements && !m.placed[k]->misses_bounds(r); ++k) r = m.placed[k]->to_object(r);
-                if (k == m.placements && m.traced->accelerator().occluded(r)) return true;
+                if (to_traced_space(m, r) && m.traced->accelerator().occluded(r)) return true;
             } else if (m.quad ? m.quad->hit_params(ray, t, alpha, beta) : m.shape->occluded(ray)) {
                 return true;
             }
@@ -419,10 +423,7 @@ Scene::Scene(std::vector<SceneObject> objects, SceneOptions options) : m_objects
         }
         member.traced = dynamic_cast<const MeshShape*>(inner);
         if (!member.traced) member.placements = 0;
-        if (member.traced && member.placements <= 1) {
-            member.mesh = packet_mesh(*member.traced);
-            if (member.mesh && member.placements == 1) member.instance = member.placed[0];
-        }
+        member.packets = member.traced && member.placements <= 1 && packets_as_single_rays(*member.traced);
         all.push_back(member);
         m_index.emplace_back(o.shape.get(), i);
         m_bounds.expand(o.shape->bounds());
