@@ -9,7 +9,6 @@
 
 #include <bit>
 #include <cstdint>
-#include <ctime>
 #include <span>
 #include <string>
 
@@ -56,21 +55,9 @@ void for_packets(std::size_t count, F&& f) {
     });
 }
 
-// Seconds on a clock: with one thread the CPU time of the tracing thread (the caller, which runs the
-// arena's work), so that time the scheduler gives to other processes on a shared machine is not counted;
-// wall time with more threads.
-double now(bool thread_time) {
-    if (thread_time) {
-        timespec ts{};
-        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-        return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-    }
-    return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
-}
-
 // One pass of each kind; blocks of 1024 rays keep the tiles whole.
 void trace(const TriangleAccelerator& accel, const std::vector<Ray>& rays, bool packets, bool thread_time, Traced& t) {
-    const double start = now(thread_time);
+    const double start = clock_seconds(thread_time);
     if (packets) {
         for_packets(rays.size(), [&](std::size_t first, std::size_t n) {
             accel.intersect_packet(std::span(rays).subspan(first, n), std::span(t.hits).subspan(first, n));
@@ -83,7 +70,7 @@ void trace(const TriangleAccelerator& accel, const std::vector<Ray>& rays, bool 
             }
         });
     }
-    const double middle = now(thread_time);
+    const double middle = clock_seconds(thread_time);
     if (packets) {
         for_packets(rays.size(), [&](std::size_t first, std::size_t n) {
             accel.occluded_packet(std::span(rays).subspan(first, n), std::span(t.blocked).subspan(first, n));
@@ -94,7 +81,7 @@ void trace(const TriangleAccelerator& accel, const std::vector<Ray>& rays, bool 
         });
     }
     t.closest_s.push_back(middle - start);
-    t.any_s.push_back(now(thread_time) - middle);
+    t.any_s.push_back(clock_seconds(thread_time) - middle);
 }
 
 bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
@@ -131,10 +118,6 @@ void run_packet_sets(const Options& o, const TriangleMesh& mesh, const std::vect
     fmt::print(
         "packets: {} x {} primary rays in 4 x 2 tiles; {} shadow rays from their hits ({}) towards ({}, {}, {})\n",
         o.primary_size, o.primary_size, sets[1].rays.size(), built.front().method, light.x, light.y, light.z);
-    if (arena.max_concurrency() == 1)
-        fmt::print(
-            "packets: with 1 thread the times are the tracing thread's CPU time (other processes' load "
-            "left out)\n");
     std::vector<std::string> summary;
     for (const Set& set : sets) {
         const Reference ref = reference_answers(reference, set.rays, o.sample_size, arena);

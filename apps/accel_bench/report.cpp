@@ -37,8 +37,8 @@ void print_reference_line(const TriangleAccelerator* reference, std::size_t samp
 void print_footer(int runs, int threads) {
     fmt::print(
         "throughput in Mrays/s, median of {} rounds after one untimed round (the methods take turns in each "
-        "round), {} thread(s); mismatch = rays whose closest hit differs from the reference on the sample\n",
-        runs, threads);
+        "round), {} thread(s){}; mismatch = rays whose closest hit differs from the reference on the sample\n",
+        runs, threads, threads == 1 ? ", in the tracing thread's CPU time" : ", in wall time");
 }
 
 void print_spawn_check(const std::string& method, const SpawnCheck& c, bool sampled) {

@@ -14,6 +14,10 @@ namespace rtlab::accel_app {
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start);
+/// Seconds on a clock: with thread_time, the CPU time of the calling thread -- with one thread it runs all of an
+/// arena's work, and time the scheduler gives to other processes of a shared machine is then not counted -- and
+/// wall time otherwise.
+double clock_seconds(bool thread_time);
 double median(std::vector<double> v);
 
 /// A method built for the run.
@@ -36,7 +40,8 @@ std::vector<Built> build_methods(const std::vector<std::string>& methods, const 
                                  const BuildOptions& options, int runs, tbb::task_arena& arena);
 
 /// Traces the set with every method: one untimed round, then `runs` rounds each timing one closest-hit and
-/// one any-hit pass of every method in turn. Brute force traces only `sampled`.
+/// one any-hit pass of every method in turn (in the tracing thread's CPU time for an arena of one thread, in
+/// wall time otherwise). Brute force traces only `sampled`.
 std::vector<Traced> trace_in_rounds(const std::vector<Built>& built, const std::vector<Ray>& rays,
                                     const std::vector<Ray>& sampled, int runs, tbb::task_arena& arena);
 
