@@ -66,7 +66,8 @@ Differences compare_packets(const TriangleAccelerator& accel, std::span<const Ra
 
 // The kd-trees over triangles, every triangle test and leaf width, each against its own single rays in
 // packets of 8 (4 x 2 tiles when the rays come in tile order), of every size up to 8 and of 13 (more than
-// one packet per call).
+// one packet per call). Also a kd-sah tree whose splits cost 100 triangle tests ("big leaves"): leaves of many
+// triangle packets, whose boxes the packet walk tests before their triangles.
 void check_kd_packets(const std::string& label, const TriangleMesh& mesh, const std::vector<Ray>& rays,
                       const std::vector<std::string>& methods = {"kd-sah", "kd-sah-binned", "kd-median",
                                                                  "kd-midpoint"}) {
@@ -75,8 +76,14 @@ void check_kd_packets(const std::string& label, const TriangleMesh& mesh, const 
         options.triangle_test = test;
         for (int width : kd_leaf_widths()) {
             options.leaf_width = width;
-            for (const std::string& method : methods) {
-                const auto accel = make_accelerator(method, mesh, options);
+            std::vector<std::string> names = methods;
+            names.push_back("big leaves");
+            for (const std::string& method : names) {
+                const auto accel = method == "big leaves"
+                                       ? make_kd_tree("kd-sah", mesh, options, KdCostModel(1.0f, 0.01f))
+                                       : make_accelerator(method, mesh, options);
+                if (method == "big leaves" && mesh.triangle_count() >= 64)
+                    CHECK(accel->stats().mean_leaf_primitives >= 2.0 * width);
                 for (std::size_t size : {8, 1, 3, 5, 7, 13}) {
                     // Every size on the kd-sah tree; the other trees in tiles of 8 only.
                     if (size != 8 && method != methods.front()) continue;

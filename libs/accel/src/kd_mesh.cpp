@@ -193,16 +193,40 @@ private:
                         KdNode& node = m_tree.nodes[leaves[k]];
                         const std::uint32_t count = node.primitive_count();
                         const std::uint32_t one = node.primitive_offset();
-                        const std::span<const std::uint32_t> triangles =
-                            count == 1 ? std::span<const std::uint32_t>(&one, 1)
-                                       : std::span<const std::uint32_t>(
-                                             m_tree.primitive_indices.data() + node.primitive_offset(), count);
+                        std::vector<std::uint32_t> triangles =
+                            count == 1 ? std::vector<std::uint32_t>{one}
+                                       : std::vector<std::uint32_t>(
+                                             m_tree.primitive_indices.data() + node.primitive_offset(),
+                                             m_tree.primitive_indices.data() + node.primitive_offset() + count);
+                        group_compactly(mesh, triangles, static_cast<std::size_t>(m_packets.width()));
                         m_packets.fill_leaf(mesh, triangles, firsts[k]);
                         node = KdNode::leaf(m_packets.packets_for(count), firsts[k]);
                     }
                 });
         });
         std::vector<std::uint32_t>().swap(m_tree.primitive_indices);
+    }
+
+    // Orders a leaf's triangles so that each run of `width` (one packet) lies close together: the widest spread of
+    // centroids halved at a multiple of width, and each half in turn, so that a packet's box is small.
+    static void group_compactly(const TriangleMesh& mesh, std::span<std::uint32_t> triangles, std::size_t width) {
+        if (triangles.size() <= width) return;
+        AABB spread;
+        for (std::uint32_t i : triangles) spread.expand(centroid(mesh, i));
+        const Vec3 extent = spread.hi - spread.lo;
+        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+        const std::size_t packets = (triangles.size() + width - 1) / width;
+        const std::size_t middle = (packets + 1) / 2 * width;
+        std::nth_element(triangles.begin(), triangles.begin() + static_cast<std::ptrdiff_t>(middle), triangles.end(),
+                         [&](std::uint32_t a, std::uint32_t b) {
+                             const float ca = centroid(mesh, a)[axis], cb = centroid(mesh, b)[axis];
+                             return ca < cb || (ca == cb && a < b);
+                         });
+        group_compactly(mesh, triangles.first(middle), width);
+        group_compactly(mesh, triangles.subspan(middle), width);
+    }
+    static Point3 centroid(const TriangleMesh& mesh, std::uint32_t i) {
+        return (mesh.corner(i, 0) + mesh.corner(i, 1) + mesh.corner(i, 2)) / 3.0f;
     }
 
     std::string m_name;

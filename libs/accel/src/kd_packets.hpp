@@ -90,22 +90,35 @@ public:
     }
     /// Room for `packets` packets, to be filled by fill_leaf (sized once: growing packet by packet moved
     /// the whole array again and again).
-    void allocate(std::size_t packets) { m_data.assign(packets * packet_floats(), 0.0f); }
+    void allocate(std::size_t packets) {
+        m_data.assign(packets * packet_floats(), 0.0f);
+        m_bounds.assign(packets * 6, 0.0f);
+    }
     /// Writes a leaf's triangles (mesh indices) into packets_for(size) packets from packet `first`. Leaves
     /// in packets of their own may be filled from several threads at once.
     void fill_leaf(const TriangleMesh& mesh, std::span<const std::uint32_t> triangles, std::uint32_t first) {
         const std::size_t block = packet_floats();
         std::size_t base = static_cast<std::size_t>(first) * block;
+        float* bounds = &m_bounds[static_cast<std::size_t>(first) * 6];
         for (std::size_t k = 0; k < triangles.size(); k += static_cast<std::size_t>(m_width), base += block) {
+            AABB box;
             for (std::size_t lane = 0; lane < static_cast<std::size_t>(m_width); ++lane) {
                 const std::uint32_t i = triangles[std::min(k + lane, triangles.size() - 1)];
                 fill_lane(mesh, i, &m_data[base], lane);
                 std::memcpy(&m_data[base + static_cast<std::size_t>(m_width * (m_rows - 1)) + lane], &i, sizeof(i));
+                for (int c = 0; c < 3; ++c) box.expand(mesh.corner(i, c));
             }
+            for (int a = 0; a < 3; ++a) {
+                bounds[a] = box.lo[a];
+                bounds[3 + a] = box.hi[a];
+            }
+            bounds += 6;
         }
     }
 
-    std::size_t bytes() const { return m_data.size() * sizeof(float); }
+    std::size_t bytes() const { return (m_data.size() + m_bounds.size()) * sizeof(float); }
+    /// Packet k's box: the corners' smallest x, y, z, then their largest (the packet walk's cull).
+    const float* bounds(std::uint32_t k) const { return m_bounds.data() + static_cast<std::size_t>(k) * 6; }
     const float* packet(std::uint32_t k) const { return m_data.data() + static_cast<std::size_t>(k) * packet_floats(); }
     /// The mesh's triangle in a lane of packet p (a pointer from packet()).
     std::uint32_t original(const float* p, int lane) const {
@@ -152,6 +165,7 @@ private:
     int m_rows = 10;
     int m_width = 4;
     std::vector<float> m_data;
+    std::vector<float> m_bounds;
 };
 
 /// \brief The per-ray constants of a packet test (scalars: each leaf test spreads them over its lanes).
@@ -356,6 +370,25 @@ template <TriangleTest Test, int W>
 // these leaves in one process (see kd_walk): 0.93-0.95x closest, 0.88-0.96x any-hit (bunny), 0.92-1.03x /
 // 0.96-0.98x (dragon). Asking only for the passed packets' lines, after the bounds test, was slower still.
 
+/// Tests packet k of width W against (tmin, closest): on a hit, true, and for closest-hit the nearest of its
+/// hits lowers closest and fills hit (mesh triangle index).
+template <TriangleTest Test, bool AnyHit, int W>
+[[gnu::always_inline]] inline bool test_one_packet(const TrianglePackets& packets, const PacketRay<Test>& r,
+                                                   std::uint32_t k, float& closest, MeshHit& hit) {
+    typename Lanes<W>::F t{}, u{}, v{};
+    const float* p = packets.packet(k);
+    const int bits = test_packet<Test, W>(r, p, closest, t, u, v);
+    if (!bits) return false;
+    if constexpr (!AnyHit) {
+        int best = -1;
+        for (int lane = 0; lane < W; ++lane)
+            if (((bits >> lane) & 1) && (best < 0 || t[lane] < t[best])) best = lane;
+        closest = t[best];
+        hit = MeshHit{t[best], packets.original(p, best), u[best], v[best]};
+    }
+    return true;
+}
+
 /// Tests packets [first, first + count) of width W against (tmin, closest). Closest-hit: the nearest hit
 /// lowers closest and fills hit (mesh triangle index). AnyHit: true at the first hit. Prefetch false: the
 /// caller has already asked for the leaf's lines (a packet of rays testing one leaf ray after ray).
@@ -368,16 +401,8 @@ template <TriangleTest Test, bool AnyHit, int W, bool Prefetch = true>
     if constexpr (Prefetch) prefetch_packets(packets, first, count);
     bool any = false;
     for (std::uint32_t k = first; k < first + count; ++k) {
-        typename Lanes<W>::F t{}, u{}, v{};
-        const float* p = packets.packet(k);
-        const int bits = test_packet<Test, W>(r, p, closest, t, u, v);
-        if (!bits) continue;
+        if (!test_one_packet<Test, AnyHit, W>(packets, r, k, closest, hit)) continue;
         if constexpr (AnyHit) return true;
-        int best = -1;
-        for (int lane = 0; lane < W; ++lane)
-            if (((bits >> lane) & 1) && (best < 0 || t[lane] < t[best])) best = lane;
-        closest = t[best];
-        hit = MeshHit{t[best], packets.original(p, best), u[best], v[best]};
         any = true;
     }
     return any;
