@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 #include "shared_data.hpp"
 
@@ -237,4 +238,103 @@ TEST_CASE("OBJ numbers the quick line check settles alone agree with the full ch
         const auto bad = write_file(c.name, c.content);
         CHECK_THROWS_WITH(load_obj(bad), Contains(c.name) && Contains(c.error));
     }
+}
+
+TEST_CASE("OBJ polygons in every corner form fan in order and share de-indexed corners", "[obj]") {
+    // A pentagon of v/vt/vn corners, relative indices in the second face: five corners fan into three triangles
+    // (c0 c1 c2) (c0 c2 c3) (c0 c3 c4); a corner repeated with the same indices is one vertex.
+    const auto path = write_file("pentagon.obj",
+                                 "v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\n"
+                                 "vt 0 0\nvt 1 0\nvn 0 0 1\nvn 0 0 -1\n"
+                                 "f 1/1/1 2/2/1 3/1/1 4/2/1 5/1/1\n"
+                                 "f -5/-2/-2 -3/-2/-2 -1/-1/-1\n");
+    const TriangleMesh m = load_obj(path);
+    REQUIRE(m.triangle_count() == 4);
+    CHECK(m.triangles[0] == std::array<std::uint32_t, 3>{0, 1, 2});
+    CHECK(m.triangles[1] == std::array<std::uint32_t, 3>{0, 2, 3});
+    CHECK(m.triangles[2] == std::array<std::uint32_t, 3>{0, 3, 4});
+    CHECK(m.triangles[3] == std::array<std::uint32_t, 3>{0, 2, 5});  // 5/2/2 is new, the others repeat
+    REQUIRE(m.vertex_count() == 6);
+    CHECK(m.positions[5] == Point3(0, 1, 0));
+    CHECK(m.normals[5] == Normal3(0, 0, -1));
+    CHECK(m.uvs[5] == Vec2(1, 0));
+}
+
+TEST_CASE("OBJ line ends: CRLF and a last line without a newline read alike", "[obj]") {
+    const std::string lf = "v 0 0 0.5\nv 1.25 0 0\nv 0 1 -2\nf 1 2 3";
+    std::string crlf;
+    for (const char c : lf) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    for (const auto& [name, content] :
+         {std::pair{"eof.obj", lf}, std::pair{"eofcrlf.obj", crlf + "\r\n"}, std::pair{"eofcr.obj", crlf}}) {
+        INFO(name);
+        const TriangleMesh m = load_obj(write_file(name, content));
+        REQUIRE(m.triangle_count() == 1);
+        CHECK(m.positions[0] == Point3(0, 0, 0.5f));
+        CHECK(m.positions[1] == Point3(1.25f, 0, 0));
+        CHECK(m.positions[2] == Point3(0, 1, -2));
+    }
+    // A vertex on the last line, named by a face before it, without a newline.
+    const TriangleMesh m = load_obj(write_file("eofvertex.obj", "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 7"));
+    REQUIRE(m.triangle_count() == 1);
+    CHECK(m.positions[2] == Point3(0, 1, 7));
+}
+
+TEST_CASE("OBJ numbers keep the bits the meshes were read with before", "[obj]") {
+    // Read as tinyobjloader read them (kept so that images of existing meshes stay byte-identical): digit by digit
+    // in a double, exponents through pow(5, e) and ldexp; numbers like these come out as the nearest floats.
+    const auto path = write_file("numbers.obj",
+                                 "v -0.037830 0.127940 0.004475\n"
+                                 "v 1e2 -2.5E-1 +.75\n"
+                                 "v 3. -0 12345678\n"
+                                 "f 1 2 3\n");
+    const TriangleMesh m = load_obj(path);
+    REQUIRE(m.vertex_count() == 3);
+    CHECK(m.positions[0] == Point3(-0.037830f, 0.127940f, 0.004475f));
+    CHECK(m.positions[1] == Point3(100.0f, -0.25f, 0.75f));
+    CHECK(m.positions[2] == Point3(3.0f, 0.0f, 12345678.0f));
+    CHECK(std::signbit(m.positions[2].y));
+}
+
+TEST_CASE("OBJ bad numbers and huge input give errors or bounded reads", "[obj]") {
+    struct Bad {
+        const char* name;
+        std::string content;
+        const char* error;
+    };
+    const std::string digits400(400, '9');
+    static constexpr char kNul[] = "v 0 0 0\nv 1 0 0\nv 0 1\0 0\nf 1 2 3\n";
+    const Bad cases[] = {
+        // Finite as a double, infinite as the float a vertex keeps.
+        {"floatrange.obj", "v 0 0 0\nv 1 1e39 0\nv 0 1 0\nf 1 2 3\n", "line 2: vertex coordinate 2 is beyond"},
+        {"digits.obj", "v " + digits400 + " 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: vertex coordinate 1"},
+        {"twodots.obj", "v 1..5 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: vertex coordinate 1"},
+        {"bareexp.obj", "v 1.5e 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: vertex coordinate 1"},
+        {"hugeexp.obj", "v 1e2147483648 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: vertex coordinate 1"},
+        {"intmax.obj", kTriangle + "f 1 2 2147483648\n", "line 4: vertex index 2147483648 out of range (3 vertices)"},
+        {"negintmax.obj", kTriangle + "f 1 2 -2147483649\n", "line 4: vertex index -2147483649 reaches before"},
+        // Cut at the NUL, as tinyobjloader's C strings were.
+        {"nul.obj", std::string(kNul, sizeof kNul - 1), "line 3: vertex coordinate 3"},
+    };
+    for (const auto& c : cases) {
+        INFO(c.name);
+        const auto path = write_file(c.name, c.content);
+        CHECK_THROWS_WITH(load_obj(path), Contains(c.name) && Contains(c.error));
+    }
+
+    // One face of 100000 corners fans into 99998 triangles; a megabyte of blanks is one empty line.
+    std::string big = kTriangle + "f";
+    for (int i = 0; i < 100000; ++i) big += i % 3 == 0 ? " 1" : i % 3 == 1 ? " 2" : " 3";
+    big += "\n" + std::string(1 << 20, ' ') + "\n";
+    CHECK(load_obj(write_file("bigface.obj", big)).triangle_count() == 99998);
+
+    // Malformed vt and vn numbers read as 0, as they always did; unknown statements are skipped.
+    const TriangleMesh m =
+        load_obj(write_file("lenient.obj", kTriangle + "vt x 1\nvt 0.5\nvt 1 1\nvn nan 0 1\n"
+                                                       "g part\no thing\ns 1\nl 1 2\np 3\nusemtl none\n"
+                                                       "f 1/1/1 2/2/1 3/3/1\n"));
+    REQUIRE(m.has_uvs());
+    REQUIRE(m.has_normals());
+    CHECK(m.uvs[0] == Vec2(0, 1));
+    CHECK(m.uvs[1] == Vec2(0.5f, 0));
+    CHECK(m.normals[0] == Normal3(0, 0, 1));
 }

@@ -1,5 +1,5 @@
 #pragma once
-/// \brief Loading triangle meshes from PLY (own reader) and OBJ (tinyobjloader).
+/// \brief Loading triangle meshes from PLY and OBJ (own readers).
 #include <rtlab/geometry/triangle_mesh.hpp>
 
 #include <filesystem>
