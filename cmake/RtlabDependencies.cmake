@@ -1,7 +1,6 @@
 # Every dependency is a Debian 12 package (scripts/setup.sh installs them); nothing is downloaded.
 find_package(glm REQUIRED)
 find_package(TBB REQUIRED)
-find_package(tinyobjloader REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(fmt REQUIRED)
 find_package(Threads REQUIRED)

@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config
   ninja-build        # scripts/test.sh builds new folders with it (cmake's Makefiles work as well)
   clang-format-14    # scripts/format.sh names this version, so every machine formats alike
-  libglm-dev libstb-dev libtinyobjloader-dev catch2 libtbb-dev libcli11-dev nlohmann-json3-dev
+  libglm-dev libstb-dev catch2 libtbb-dev libcli11-dev nlohmann-json3-dev
   libfmt-dev libpcg-cpp-dev libbenchmark-dev libopenexr-dev zlib1g-dev
   libembree-dev      # optional reference backend; the build works without it
   python3-matplotlib # charts (scripts/charts.sh, run with /usr/bin/python3)
