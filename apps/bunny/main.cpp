@@ -1,5 +1,6 @@
 // rtlab-bunny [--mesh FILE] [--material diffuse|phong|mirror|glass] [common flags]: a mesh (the Stanford bunny
 // by default) on a floor, through its kd-tree (apps/bunny/scene.cpp).
+#include "heap.hpp"
 #include "scene.hpp"
 
 #include <rtlab/app/course_app.hpp>
@@ -9,18 +10,8 @@
 
 #include <chrono>
 
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
 int main(int argc, char** argv) {
-#if defined(__GLIBC__)
-    // glibc maps blocks from 128 kB up afresh and returns freed memory to the kernel; the kd-tree build allocates
-    // and frees such blocks node after node, each time paying the page faults again. Kept and reused instead: a
-    // 64 x 48 bunny's run took 5,683 page faults and 133 ms of CPU, now 3,158 and 110 ms (kd-tree 0.07 -> 0.04 s).
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
-    mallopt(M_TRIM_THRESHOLD, 256 << 20);
-#endif
+    rtlab::bunny::prepare_heap();  // apps/bunny/heap.cpp: the start-up is largely page faults
     rtlab::app::CommandLine cli("rtlab-bunny", "rtlab-bunny: the Stanford bunny (or any PLY/OBJ mesh) on a floor");
     rtlab::app::CourseOptions options;
     options.output = "bunny.png";
