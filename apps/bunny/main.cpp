@@ -1,6 +1,5 @@
 // rtlab-bunny [--mesh FILE] [--material diffuse|phong|mirror|glass] [common flags]: a mesh (the Stanford bunny
 // by default) on a floor, through its kd-tree (apps/bunny/scene.cpp).
-#include "heap.hpp"
 #include "scene.hpp"
 
 #include <rtlab/app/course_app.hpp>
@@ -11,7 +10,6 @@
 #include <chrono>
 
 int main(int argc, char** argv) {
-    rtlab::bunny::prepare_heap();  // apps/bunny/heap.cpp: the start-up is largely page faults
     rtlab::app::CommandLine cli("rtlab-bunny", "rtlab-bunny: the Stanford bunny (or any PLY/OBJ mesh) on a floor");
     rtlab::app::CourseOptions options;
     options.output = "bunny.png";

@@ -1,4 +1,5 @@
 #include <rtlab/app/command_line.hpp>
+#include <rtlab/app/process_heap.hpp>
 #include <rtlab/core/file.hpp>
 #include <rtlab/core/spelling.hpp>
 #include <rtlab/render/image_limits.hpp>
@@ -345,6 +346,7 @@ int CommandLine::usage_error(const std::string& message) const {
 }
 
 int run_program(const std::string& program, const std::function<int()>& body) {
+    prepare_heap();
     try {
         return body();
     } catch (const UsageError& e) {

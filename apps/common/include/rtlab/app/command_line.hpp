@@ -122,8 +122,8 @@ private:
     std::vector<std::function<void()>> m_after;  // checks of several flags together, after each one's own
 };
 
-/// Runs an app's body: returns its status; a UsageError becomes "PROGRAM: message" and kExitUsage, any other
-/// exception "PROGRAM: message" and kExitBadInput.
+/// Runs an app's body, the heap prepared for it first (prepare_heap): returns its status; a UsageError becomes
+/// "PROGRAM: message" and kExitUsage, any other exception "PROGRAM: message" and kExitBadInput.
 int run_program(const std::string& program, const std::function<int()>& body);
 
 /// Checks that --aa and --spp (applied to `settings` already) give exactly the samples asked for: --spp with

@@ -1,11 +1,12 @@
-// Page faults are most of what a bunny's start-up costs beyond its instructions: about 9 us each on the machines
-// measured (2026-11), and a 1280 x 960 run took 9,800 of them -- the mesh's arrays, the kd-tree build's per-node
-// blocks, the image. glibc maps blocks from 128 kB up afresh and returns freed memory to the kernel, so the build
-// paid for the same pages again node after node; and the kernel's transparent huge pages, which would take one
+// Page faults are most of what a course render's start-up costs beyond its instructions: about 9 us each on the
+// machines measured (2026-11), and a 1280 x 960 run took 9,800 of them -- the mesh's arrays, the kd-tree build's
+// per-node blocks, the image. glibc maps blocks from 128 kB up afresh and returns freed memory to the kernel, so the
+// build paid for the same pages again node after node; and the kernel's transparent huge pages, which would take one
 // fault per 2 MB instead of per 4 kB, are here only given to memory that asks for them (madvise).
-#include "heap.hpp"
+#include <rtlab/app/process_heap.hpp>
 
-#if defined(__GLIBC__) && defined(__linux__)
+#if defined(__GLIBC__) && defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
+#define RTLAB_TUNE_HEAP 1
 #include <malloc.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -14,10 +15,10 @@
 #include <cstdlib>
 #endif
 
-namespace rtlab::bunny {
+namespace rtlab::app {
 
 void prepare_heap() {
-#if defined(__GLIBC__) && defined(__linux__)
+#if RTLAB_TUNE_HEAP
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 256 << 20);
     // Grow the heap by 64 MB at once (a block larger than any free one, with that much padding), advise the
@@ -34,4 +35,4 @@ void prepare_heap() {
 #endif
 }
 
-}  // namespace rtlab::bunny
+}  // namespace rtlab::app
