@@ -186,6 +186,7 @@ private:
             packets += m_packets.packets_for(node.primitive_count());
         }
         m_packets.allocate(packets);
+        const auto width = static_cast<std::size_t>(m_packets.width());
         in_arena(threads, [&] {
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(0, leaves.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -193,12 +194,11 @@ private:
                         KdNode& node = m_tree.nodes[leaves[k]];
                         const std::uint32_t count = node.primitive_count();
                         const std::uint32_t one = node.primitive_offset();
-                        std::vector<std::uint32_t> triangles =
-                            count == 1 ? std::vector<std::uint32_t>{one}
-                                       : std::vector<std::uint32_t>(
-                                             m_tree.primitive_indices.data() + node.primitive_offset(),
-                                             m_tree.primitive_indices.data() + node.primitive_offset() + count);
-                        group_compactly(mesh, triangles, static_cast<std::size_t>(m_packets.width()));
+                        const std::span<const std::uint32_t> listed =
+                            count == 1 ? std::span<const std::uint32_t>(&one, 1)
+                                       : std::span<const std::uint32_t>(
+                                             m_tree.primitive_indices.data() + node.primitive_offset(), count);
+                        const std::vector<std::uint32_t> triangles = grouped_compactly(mesh, listed, width);
                         m_packets.fill_leaf(mesh, triangles, firsts[k]);
                         node = KdNode::leaf(m_packets.packets_for(count), firsts[k]);
                     }
@@ -207,26 +207,40 @@ private:
         std::vector<std::uint32_t>().swap(m_tree.primitive_indices);
     }
 
-    // Orders a leaf's triangles so that each run of `width` (one packet) lies close together: the widest spread of
-    // centroids halved at a multiple of width, and each half in turn, so that a packet's box is small.
-    static void group_compactly(const TriangleMesh& mesh, std::span<std::uint32_t> triangles, std::size_t width) {
-        if (triangles.size() <= width) return;
+    // A leaf's triangles ordered so that each run of `width` (one packet) lies close together: the widest spread of
+    // centroids halved at a multiple of width, and each half in turn, so that a packet's box (the packet walk's
+    // cull) is small.
+    struct Placed {
+        Point3 centroid;
+        std::uint32_t triangle;
+    };
+    static std::vector<std::uint32_t> grouped_compactly(const TriangleMesh& mesh, std::span<const std::uint32_t> listed,
+                                                        std::size_t width) {
+        std::vector<Placed> placed(listed.size());
+        for (std::size_t j = 0; j < listed.size(); ++j) {
+            const std::uint32_t i = listed[j];
+            placed[j] = {(mesh.corner(i, 0) + mesh.corner(i, 1) + mesh.corner(i, 2)) / 3.0f, i};
+        }
+        group(placed, width);
+        std::vector<std::uint32_t> triangles(listed.size());
+        for (std::size_t j = 0; j < placed.size(); ++j) triangles[j] = placed[j].triangle;
+        return triangles;
+    }
+    static void group(std::span<Placed> placed, std::size_t width) {
+        if (placed.size() <= width) return;
         AABB spread;
-        for (std::uint32_t i : triangles) spread.expand(centroid(mesh, i));
+        for (const Placed& p : placed) spread.expand(p.centroid);
         const Vec3 extent = spread.hi - spread.lo;
         const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-        const std::size_t packets = (triangles.size() + width - 1) / width;
+        const std::size_t packets = (placed.size() + width - 1) / width;
         const std::size_t middle = (packets + 1) / 2 * width;
-        std::nth_element(triangles.begin(), triangles.begin() + static_cast<std::ptrdiff_t>(middle), triangles.end(),
-                         [&](std::uint32_t a, std::uint32_t b) {
-                             const float ca = centroid(mesh, a)[axis], cb = centroid(mesh, b)[axis];
-                             return ca < cb || (ca == cb && a < b);
+        std::nth_element(placed.begin(), placed.begin() + static_cast<std::ptrdiff_t>(middle), placed.end(),
+                         [axis](const Placed& a, const Placed& b) {
+                             const float ca = a.centroid[axis], cb = b.centroid[axis];
+                             return ca < cb || (ca == cb && a.triangle < b.triangle);
                          });
-        group_compactly(mesh, triangles.first(middle), width);
-        group_compactly(mesh, triangles.subspan(middle), width);
-    }
-    static Point3 centroid(const TriangleMesh& mesh, std::uint32_t i) {
-        return (mesh.corner(i, 0) + mesh.corner(i, 1) + mesh.corner(i, 2)) / 3.0f;
+        group(placed.first(middle), width);
+        group(placed.subspan(middle), width);
     }
 
     std::string m_name;
