@@ -9,6 +9,8 @@
 #include "shared_data.hpp"
 
 #include <fstream>
+#include <span>
+#include <string>
 
 using namespace rtlab;
 using Catch::Matchers::Contains;
@@ -20,6 +22,23 @@ std::filesystem::path write_file(const std::string& name, const std::string& con
     const auto p = dir / name;
     std::ofstream(p, std::ios::binary) << content;
     return p;
+}
+
+// A file the reader must reject: its name, its content, and what its error says besides the file's name.
+struct Rejected {
+    const char* name;
+    std::string content;
+    const char* error;
+};
+
+// Writes each file and loads it: an Error naming the file and saying what the case expects.
+void check_rejected(std::span<const Rejected> cases) {
+    for (const Rejected& c : cases) {
+        INFO(c.name);
+        const auto path = write_file(c.name, c.content);
+        CHECK_THROWS_AS(load_obj(path), Error);
+        CHECK_THROWS_WITH(load_obj(path), Contains(c.name) && Contains(c.error));
+    }
 }
 }  // namespace
 
@@ -63,12 +82,7 @@ TEST_CASE("a missing material library is a warning, not a failure", "[obj]") {
 }
 
 TEST_CASE("malformed OBJ files give errors naming the file and the problem", "[obj]") {
-    struct Bad {
-        const char* name;
-        std::string content;
-        const char* error;
-    };
-    const Bad cases[] = {
+    const Rejected cases[] = {
         {"empty.obj", "", "empty file"},
         {"garbage.obj", "this is not a mesh\nat all\n", "no vertices or faces"},
         {"points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "no faces"},
@@ -79,12 +93,7 @@ TEST_CASE("malformed OBJ files give errors naming the file and the problem", "[o
         {"shortv.obj", "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: vertex coordinate 3 is missing"},
         {"wordv.obj", "v 0 0 0\nv one 0 0\nv 0 1 0\nf 1 2 3\n", "line 2: vertex coordinate 1"},
     };
-    for (const auto& c : cases) {
-        INFO(c.name);
-        const auto path = write_file(c.name, c.content);
-        CHECK_THROWS_AS(load_obj(path), Error);
-        CHECK_THROWS_WITH(load_obj(path), Contains(c.name) && Contains(c.error));
-    }
+    check_rejected(cases);
     CHECK_THROWS_WITH(load_obj(dir / "missing.obj"), Contains("missing.obj") && Contains("no such file"));
     CHECK_THROWS_WITH(load_obj(dir), Contains("is a directory"));
 }
@@ -95,13 +104,8 @@ const std::string kTriangleUvNormal = kTriangle + "vt 0 0\nvt 1 0\nvt 0 1\nvn 0 
 }  // namespace
 
 TEST_CASE("OBJ face indices that do not name a vertex are errors naming the file and the line", "[obj]") {
-    struct Bad {
-        const char* name;
-        std::string content;
-        const char* error;
-    };
     // tinyobjloader reads indices with atoi: 20 digits wrap to -1 (the last vertex), 4294967299 wraps to 3.
-    const Bad cases[] = {
+    const Rejected cases[] = {
         {"huge.obj", kTriangle + "f 1 2 12345678901234567890\n",
          "line 4: vertex index 12345678901234567890 out of range"},
         {"wrap.obj", kTriangle + "f 1 2 4294967299\n", "line 4: vertex index 4294967299 out of range (3 vertices)"},
@@ -160,12 +164,7 @@ TEST_CASE("OBJ faces may name vertices defined later in the file", "[obj]") {
 }
 
 TEST_CASE("OBJ errors name the first bad line when a forward index comes before another error", "[obj]") {
-    struct Bad {
-        const char* name;
-        std::string content;
-        const char* error;
-    };
-    const Bad cases[] = {
+    const Rejected cases[] = {
         // Index 5 at line 1 is out of range for the file's 4 vertices: that is the first error, not line 3.
         {"fwdfirst.obj", "f 1 2 5\nv 0 0 0\nv 1 nan 0\nv 0 1 0\nv 1 1 0\n",
          "line 1: vertex index 5 out of range (4 vertices)"},
@@ -178,11 +177,7 @@ TEST_CASE("OBJ errors name the first bad line when a forward index comes before 
         // Counted to the file's end, past the line with the other error.
         {"fwdlater.obj", "f 1 2 4\nv 0 0 0\nv 1 0 0\nf 1 2 0\nv 0 1 0\nv 1 1 0\n", "line 4: vertex index 0"},
     };
-    for (const auto& c : cases) {
-        INFO(c.name);
-        const auto path = write_file(c.name, c.content);
-        CHECK_THROWS_WITH(load_obj(path), Contains(c.name) && Contains(c.error));
-    }
+    check_rejected(cases);
 }
 
 TEST_CASE("OBJ face corners in every legal form still load", "[obj]") {
@@ -217,12 +212,7 @@ TEST_CASE("OBJ numbers the quick line check settles alone agree with the full ch
     CHECK(m.corner(0, 1) == Point3(-0.0f, 1e-5f, 2.25f));
     CHECK(m.corner(0, 2) == Point3(1.5f, 0.0f, 1.0f));
 
-    struct Bad {
-        const char* name;
-        std::string content;
-        const char* error;
-    };
-    const Bad cases[] = {
+    const Rejected cases[] = {
         {"quickhuge.obj", "v 1e400 0 0\n" + kTriangle + "f 2 3 4\n", "line 1: vertex coordinate 1"},
         {"quickhex.obj", "v 0x1 0 0\n" + kTriangle + "f 2 3 4\n", "line 1: vertex coordinate 1"},
         {"quickpoint.obj", "v 0 . 0\n" + kTriangle + "f 2 3 4\n", "line 1: vertex coordinate 2"},
@@ -233,11 +223,7 @@ TEST_CASE("OBJ numbers the quick line check settles alone agree with the full ch
          "line 8: normal index 2 out of range (1 normals)"},
         {"quickten.obj", kTriangle + "f 1 2 0000000004\n", "line 4: vertex index 0000000004 out of range"},
     };
-    for (const auto& c : cases) {
-        INFO(c.name);
-        const auto bad = write_file(c.name, c.content);
-        CHECK_THROWS_WITH(load_obj(bad), Contains(c.name) && Contains(c.error));
-    }
+    check_rejected(cases);
 }
 
 TEST_CASE("OBJ polygons in every corner form fan in order and share de-indexed corners", "[obj]") {
@@ -296,14 +282,9 @@ TEST_CASE("OBJ numbers keep the bits the meshes were read with before", "[obj]")
 }
 
 TEST_CASE("OBJ bad numbers and huge input give errors or bounded reads", "[obj]") {
-    struct Bad {
-        const char* name;
-        std::string content;
-        const char* error;
-    };
     const std::string digits400(400, '9');
     static constexpr char kNul[] = "v 0 0 0\nv 1 0 0\nv 0 1\0 0\nf 1 2 3\n";
-    const Bad cases[] = {
+    const Rejected cases[] = {
         // Finite as a double, infinite as the float a vertex keeps.
         {"floatrange.obj", "v 0 0 0\nv 1 1e39 0\nv 0 1 0\nf 1 2 3\n", "line 2: vertex coordinate 2 is beyond"},
         {"digits.obj", "v " + digits400 + " 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: vertex coordinate 1"},
@@ -315,11 +296,7 @@ TEST_CASE("OBJ bad numbers and huge input give errors or bounded reads", "[obj]"
         // Cut at the NUL, as tinyobjloader's C strings were.
         {"nul.obj", std::string(kNul, sizeof kNul - 1), "line 3: vertex coordinate 3"},
     };
-    for (const auto& c : cases) {
-        INFO(c.name);
-        const auto path = write_file(c.name, c.content);
-        CHECK_THROWS_WITH(load_obj(path), Contains(c.name) && Contains(c.error));
-    }
+    check_rejected(cases);
 
     // One face of 100000 corners fans into 99998 triangles; a megabyte of blanks is one empty line.
     std::string big = kTriangle + "f";
