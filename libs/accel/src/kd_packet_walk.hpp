@@ -58,8 +58,9 @@ template <int W>
     return t * (t > splat<W>(0.0f) ? splat<W>(1.0f + kTwoGamma3) : splat<W>(1.0f - kTwoGamma3));
 }
 
-/// One packet's walk over the lanes `alive` (one octant); leaves tested per lane by test_packets of width
-/// LeafW. Closest-hit: hits[lane] and the lane's bit in the result on a hit; any-hit: the bit alone.
+/// One packet's walk over the lanes `alive` (one octant); a leaf's packets of LeafW triangles tested one after
+/// another by the lanes that may reach each (test_one_packet). Closest-hit: hits[lane] and the lane's bit in the result
+/// on a hit; any-hit: the bit alone.
 template <TriangleTest Test, bool AnyHit, int W, int LeafW>
 class PacketWalk {
 public:
@@ -67,7 +68,7 @@ public:
     using I = typename Lanes<W>::I;
 
     /// Each lane's origin, inverse direction, root interval [tmin, tmax] (tmax widened by overlap), overlap,
-    /// end slack and ray.tmax, as kd_traverse and kd_walk compute them.
+    /// end slack, ray.tmin and ray.tmax, as kd_traverse and kd_walk compute them.
     struct Start {
         F origin[3], inv[3];
         F tmin, tmax, overlap, end_slack, ray_tmin, ray_tmax;

@@ -390,15 +390,14 @@ template <TriangleTest Test, bool AnyHit, int W>
 }
 
 /// Tests packets [first, first + count) of width W against (tmin, closest). Closest-hit: the nearest hit
-/// lowers closest and fills hit (mesh triangle index). AnyHit: true at the first hit. Prefetch false: the
-/// caller has already asked for the leaf's lines (a packet of rays testing one leaf ray after ray).
-template <TriangleTest Test, bool AnyHit, int W, bool Prefetch = true>
+/// lowers closest and fills hit (mesh triangle index). AnyHit: true at the first hit.
+template <TriangleTest Test, bool AnyHit, int W>
 [[gnu::always_inline]] inline bool test_packets(const TrianglePackets& packets, const PacketRay<Test>& r,
                                                 std::uint32_t first, std::uint32_t count, float& closest,
                                                 MeshHit& hit) {
     // The leaf's packets are one contiguous run, usually not in cache: ask for all of its lines at once
     // rather than one miss after another.
-    if constexpr (Prefetch) prefetch_packets(packets, first, count);
+    prefetch_packets(packets, first, count);
     bool any = false;
     for (std::uint32_t k = first; k < first + count; ++k) {
         if (!test_one_packet<Test, AnyHit, W>(packets, r, k, closest, hit)) continue;
