@@ -94,12 +94,12 @@ bool is_plain_decimal(std::string_view w) {
     if (w.size() > 40) return false;
     std::size_t i = !w.empty() && (w[0] == '-' || w[0] == '+') ? 1 : 0;
     const std::size_t int_start = i;
-    while (i < w.size() && w[i] >= '0' && w[i] <= '9') ++i;
+    while (i < w.size() && is_digit(w[i])) ++i;
     if (i == int_start) return false;
     if (i == w.size()) return true;
     if (w[i] != '.') return false;
     const std::size_t frac_start = ++i;
-    while (i < w.size() && w[i] >= '0' && w[i] <= '9') ++i;
+    while (i < w.size() && is_digit(w[i])) ++i;
     return i > frac_start && i == w.size();
 }
 
@@ -209,7 +209,7 @@ std::int64_t index_magnitude(std::string_view text) {
 
 bool is_index(std::string_view s) {
     if (!s.empty() && (s.front() == '-' || s.front() == '+')) s.remove_prefix(1);
-    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+    return !s.empty() && std::all_of(s.begin(), s.end(), is_digit);
 }
 
 // Faces with fewer than 3 corners, dropped as tinyobjloader dropped them (FORMATS.md drops them too).
