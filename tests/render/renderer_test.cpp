@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <mutex>
 #include <set>
+#include <span>
 #include <string>
 #include <thread>
 
@@ -90,6 +91,81 @@ TEST_CASE("1 2 and 8 threads give the same image byte for byte", "[renderer]") {
         // And another seed changes the noise.
         s.seed = 100;
         CHECK_FALSE(same_bytes(one.image, render(camera, scene, s).image));
+    }
+}
+
+namespace {
+
+/// NoisySphere that records the groups radiance_batch() is handed (their keys), each sample's radiance its own.
+class GroupedNoisySphere final : public RadianceSource {
+public:
+    RGB radiance(const Ray& r, const SampleKey& key, RayCounters& counters) const override {
+        return m_sphere.radiance(r, key, counters);
+    }
+    void radiance_batch(std::span<const CameraSample> samples, std::span<RGB> out,
+                        RayCounters& counters) const override {
+        std::vector<SampleKey> keys;
+        for (std::size_t i = 0; i < samples.size(); ++i) {
+            keys.push_back(samples[i].stream.key());
+            out[i] = m_sphere.radiance(samples[i].ray, keys.back(), counters);
+        }
+        std::lock_guard lock(m_mutex);
+        m_groups.push_back(std::move(keys));
+    }
+    std::vector<std::vector<SampleKey>> groups() const {
+        std::lock_guard lock(m_mutex);
+        return m_groups;
+    }
+
+private:
+    NoisySphere m_sphere;
+    mutable std::mutex m_mutex;
+    mutable std::vector<std::vector<SampleKey>> m_groups;
+};
+
+}  // namespace
+
+TEST_CASE("adaptive sampling hands its pixel corners over in groups and renders the same image", "[renderer]") {
+    const ThinLensCamera camera(
+        {.eye = {0, 0, 0}, .look_at = {0, 0, -4}, .vertical_fov_degrees = 40.0f, .width = 29, .height = 17},
+        {.aperture = 0.2f, .focus_distance = 3.5f});
+    for (const int tile : {5, 8, 64}) {
+        INFO("tile " << tile);
+        RenderSettings s;
+        s.pattern = PixelPattern::adaptive;
+        s.adaptive = {3, 0.2f};
+        s.seed = 7;
+        s.tile_size = tile;  // 5: odd rows of pixels in a tile, a last pair cut short
+        s.threads = 2;
+        const GroupedNoisySphere grouped;
+        const RenderResult with = render(camera, grouped, s);
+        s.packets = false;
+        const GroupedNoisySphere single;
+        const RenderResult without = render(camera, single, s);
+        CHECK(single.groups().empty());
+        CHECK(same_bytes(with.image, without.image));
+        CHECK(with.samples == without.samples);
+        CHECK(with.stats.rays == without.stats.rays);
+        // Every pixel corner of every tile, in groups of two rows of corners (three in a tile's first row, one in
+        // the last row of a tile with an odd count of rows), and nothing else: the lattice points inside pixels are
+        // still traced one at a time.
+        std::size_t grouped_samples = 0, expected_samples = 0, expected_groups = 0;
+        bool corners_only = true;
+        for (const auto& keys : grouped.groups()) {
+            for (const SampleKey& k : keys) corners_only = corners_only && k.x % 8 == 0 && k.y % 8 == 0;
+            grouped_samples += keys.size();
+        }
+        for (int y0 = 0; y0 < camera.height(); y0 += tile)
+            for (int x0 = 0; x0 < camera.width(); x0 += tile) {
+                const auto columns = static_cast<std::size_t>(std::min(tile, camera.width() - x0));
+                const auto rows = static_cast<std::size_t>(std::min(tile, camera.height() - y0));
+                expected_samples += (columns + 1) * (rows + 1);
+                expected_groups += (rows + 1) / 2;
+            }
+        CHECK(corners_only);
+        CHECK(grouped_samples == expected_samples);
+        CHECK(grouped.groups().size() == expected_groups);
+        CHECK(with.stats.rays.camera > expected_samples);  // the noise made it refine
     }
 }
 

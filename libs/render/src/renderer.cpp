@@ -11,6 +11,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <utility>
 
 namespace rtlab {
 
@@ -107,6 +108,13 @@ bool render_fixed_tile_groups(const TileContext& c, const Tile& t, RayCounters& 
 /// The corners of one row of pixels of a tile: (R + 1) lattice rows of (tile width * R + 1) points,
 /// R = 2^max_depth. The bottom lattice row becomes the next pixel row's top, so every lattice point of a
 /// tile is traced at most once.
+///
+/// With RenderSettings::packets the pixel corners (every R-th point of every R-th lattice row, which every
+/// pixel traces) of two pixel rows go to the radiance source as one group before the squares of the first
+/// row are looked at: coherent camera rays, like a fixed pattern's; the points inside the pixels, traced
+/// only where the corners differ, stay one at a time. A corner traced ahead is counted (RenderResult::samples)
+/// by the pixel that first asks for it, as it would have been traced, so counts and image are the same
+/// either way.
 class AdaptiveRow {
 public:
     AdaptiveRow(const TileContext& c, const Tile& t)
@@ -115,11 +123,12 @@ public:
           m_res(1 << c.settings.adaptive.max_depth),
           m_cols((t.x1 - t.x0) * m_res + 1),
           m_values(static_cast<std::size_t>((m_res + 1) * m_cols)),
-          m_ready(m_values.size(), 0) {}
+          m_state(m_values.size(), kNotTraced) {}
 
     /// Renders pixel row y of the tile; false when stopped before its end.
     bool render_row(int y, RayCounters& counters) {
         m_y = y;
+        if (m_c.settings.packets) trace_pixel_corners(counters);
         for (int x = m_tile.x0; x < m_tile.x1; ++x) {
             // Per pixel: at depth 8 one pixel may trace 66,049 rays.
             if (stopped(m_c.callbacks)) return false;
@@ -132,28 +141,88 @@ public:
         // The bottom lattice row is the next pixel row's top.
         const std::size_t row = static_cast<std::size_t>(m_cols);
         std::copy(m_values.end() - static_cast<std::ptrdiff_t>(row), m_values.end(), m_values.begin());
-        std::copy(m_ready.end() - static_cast<std::ptrdiff_t>(row), m_ready.end(), m_ready.begin());
-        std::fill(m_ready.begin() + static_cast<std::ptrdiff_t>(row), m_ready.end(), 0);
+        std::copy(m_state.end() - static_cast<std::ptrdiff_t>(row), m_state.end(), m_state.begin());
+        std::fill(m_state.begin() + static_cast<std::ptrdiff_t>(row), m_state.end(), kNotTraced);
         return true;
     }
 
 private:
+    // A lattice point's value is not traced yet, traced and counted by a pixel, or traced ahead in a group and
+    // not yet counted.
+    static constexpr unsigned char kNotTraced = 0, kCounted = 1, kTracedAhead = 2;
+
+    std::size_t index(int i, int j) const {
+        return static_cast<std::size_t>(j) * static_cast<std::size_t>(m_cols) + static_cast<std::size_t>(i);
+    }
+
+    // The lattice point (i, j) of pixel row `y`'s lattice: its position on the image and its sample's key.
+    std::pair<Vec2, SampleKey> lattice_point(int i, int j, int y) const {
+        const std::uint32_t lx =
+            static_cast<std::uint32_t>(m_tile.x0) * static_cast<std::uint32_t>(m_res) + static_cast<std::uint32_t>(i);
+        const std::uint32_t ly =
+            static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(m_res) + static_cast<std::uint32_t>(j);
+        // Exact: lx and ly stay below 2^24 (checked in render()) and the division is by a power of two.
+        const Vec2 position(static_cast<float>(lx) / static_cast<float>(m_res),
+                            static_cast<float>(ly) / static_cast<float>(m_res));
+        return {position, SampleKey{m_c.settings.seed, lx, ly, 0, 0}};
+    }
+
     const RGB& corner(int i, int j, RayCounters& counters) {
-        const std::size_t k =
-            static_cast<std::size_t>(j) * static_cast<std::size_t>(m_cols) + static_cast<std::size_t>(i);
-        if (!m_ready[k]) {
-            const std::uint32_t lx = static_cast<std::uint32_t>(m_tile.x0) * static_cast<std::uint32_t>(m_res) +
-                                     static_cast<std::uint32_t>(i);
-            const std::uint32_t ly =
-                static_cast<std::uint32_t>(m_y) * static_cast<std::uint32_t>(m_res) + static_cast<std::uint32_t>(j);
-            // Exact: lx and ly stay below 2^24 (checked in render()) and the division is by a power of two.
-            const Vec2 position(static_cast<float>(lx) / static_cast<float>(m_res),
-                                static_cast<float>(ly) / static_cast<float>(m_res));
-            m_values[k] = trace(m_c, position, SampleKey{m_c.settings.seed, lx, ly, 0, 0}, counters);
-            m_ready[k] = 1;
+        const std::size_t k = index(i, j);
+        if (m_state[k] != kCounted) {
+            if (m_state[k] == kNotTraced) {
+                const auto [position, key] = lattice_point(i, j, m_y);
+                m_values[k] = trace(m_c, position, key, counters);
+            }
+            m_state[k] = kCounted;
             ++m_traced;
         }
         return m_values[k];
+    }
+
+    // The pixel corners of row m_y not traced yet (its top ones only in a tile's first row) and, when the tile has
+    // one, those at the bottom of the next row, as one group (kept in m_ahead for the next row). A group is two rows of
+    // pixel corners (three in a tile's first row): radiance_batch() takes them column by column, so its packets hold
+    // 4 x 2 corners.
+    void trace_pixel_corners(RayCounters& counters) {
+        const int pixels = m_tile.x1 - m_tile.x0;
+        const int bottom = m_res;  // the lattice row of the pixel row's bottom corners
+        if (m_ahead_row == m_y) {
+            for (int p = 0; p <= pixels; ++p) {
+                const std::size_t k = index(p * m_res, bottom);
+                m_values[k] = m_ahead[static_cast<std::size_t>(p)];
+                m_state[k] = kTracedAhead;
+            }
+            return;
+        }
+        m_group.clear();
+        m_targets.clear();
+        const bool next_row = m_y + 1 < m_tile.y1;
+        for (const int j : {0, bottom, 2 * bottom}) {
+            if (j == 2 * bottom && !next_row) break;
+            for (int p = 0; p <= pixels; ++p) {
+                const int i = p * m_res;
+                const bool ahead = j == 2 * bottom;
+                if (!ahead && m_state[index(i, j)] != kNotTraced) continue;
+                const auto [position, key] = ahead ? lattice_point(i, bottom, m_y + 1) : lattice_point(i, j, m_y);
+                m_group.push_back(CameraSample{camera_ray(m_c, position, key, counters),
+                                               SampleStream(SampleSequence::independent, key)});
+                m_targets.push_back(ahead ? Target{true, static_cast<std::size_t>(p)} : Target{false, index(i, j)});
+            }
+        }
+        m_group_values.resize(m_group.size());
+        m_c.radiance.radiance_batch(m_group, m_group_values, counters);
+        m_ahead.resize(static_cast<std::size_t>(pixels + 1));
+        for (std::size_t g = 0; g < m_group.size(); ++g) {
+            const Target& target = m_targets[g];
+            if (target.ahead) {
+                m_ahead[target.index] = m_group_values[g];
+            } else {
+                m_values[target.index] = m_group_values[g];
+                m_state[target.index] = kTracedAhead;
+            }
+        }
+        m_ahead_row = next_row ? m_y + 1 : -1;
     }
 
     /// The value of the square with top-left lattice corner (i, j) and side `size` lattice steps. The
@@ -203,7 +272,17 @@ private:
     int m_y = 0;
     std::uint32_t m_traced = 0;
     std::vector<RGB> m_values;
-    std::vector<unsigned char> m_ready;
+    std::vector<unsigned char> m_state;
+    // trace_pixel_corners()'s group, where each of its values goes, and the next row's bottom corners.
+    struct Target {
+        bool ahead;         // into m_ahead rather than m_values
+        std::size_t index;  // in m_ahead or m_values
+    };
+    std::vector<CameraSample> m_group;
+    std::vector<RGB> m_group_values;
+    std::vector<Target> m_targets;
+    std::vector<RGB> m_ahead;
+    int m_ahead_row = -1;  // the pixel row whose bottom corners m_ahead holds, -1 for none
 };
 
 bool render_adaptive_tile(const TileContext& c, const Tile& t, RayCounters& counters) {

@@ -58,8 +58,9 @@ public:
     }
 
     /// The entry point for groups of coherent rays: out[i] = the radiance of samples[i], for a group the
-    /// progressive renderer forms from one sample index over neighbouring pixels of a tile (up to two pixel rows,
-    /// row-major, so 4x2 and 8x2 blocks are contiguous in pairs of row runs). `out` has samples.size() elements.
+    /// renderers form from one sample index over neighbouring pixels of a tile (up to two pixel rows, row-major, so
+    /// 4x2 and 8x2 blocks are contiguous in pairs of row runs) or from adaptive sampling's pixel corners (up to three
+    /// rows of them). `out` has samples.size() elements.
     /// The default calls sample_radiance() in order; a packet tracer overrides it. Results must equal what
     /// sample_radiance() gives for each sample alone, so images do not depend on how samples are grouped.
     virtual void radiance_batch(std::span<const CameraSample> samples, std::span<RGB> out,
