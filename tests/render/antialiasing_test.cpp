@@ -1,3 +1,4 @@
+#include "image_bytes.hpp"
 #include "image_plane.hpp"
 
 #include <rtlab/render/renderer.hpp>
@@ -217,6 +218,21 @@ TEST_CASE("adaptive sampling terminates on pure noise at the sample cap", "[aa]"
     const CountingSource noise([](const Ray&, const SampleKey& key) { return RGB(sample_uniform(key, 0)); });
     adaptive_case(noise, 3, 5);
     CHECK(noise.most_traced() <= 4);
+    // Depth 8 over a row of 12 pixels: the groups take the levels ahead up to 49,152 squares, and the recursion
+    // traces the rest itself; every lattice point still once, and the image and counts those of single rays.
+    auto deep_noise = [](const Ray&, const SampleKey& key) {
+        return RGB(sample_uniform(key, 0), sample_uniform(key, 1), sample_uniform(key, 2));
+    };
+    const CountingSource grouped(deep_noise), single(deep_noise);
+    const RenderResult with = adaptive_case(grouped, 8, 64, 12, 1);
+    RenderSettings s = adaptive(8, 0.3f);
+    s.packets = false;
+    const RenderResult without = render(ImagePlaneCamera(12, 1), single, s);
+    CHECK(grouped.most_traced() == 1);
+    CHECK(grouped.positions() == single.positions());
+    CHECK(grouped.positions() > static_cast<std::size_t>((12 * 256 + 1) * 257) * 99 / 100);
+    CHECK(test::same_bytes(with.image, without.image));
+    CHECK(with.samples == without.samples);
 }
 
 TEST_CASE("adaptive sampling terminates on NaN colours", "[aa]") {

@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -125,7 +126,7 @@ private:
 
 }  // namespace
 
-TEST_CASE("adaptive sampling hands its pixel corners over in groups and renders the same image", "[renderer]") {
+TEST_CASE("adaptive sampling hands its camera rays over in groups and renders the same image", "[renderer]") {
     const ThinLensCamera camera(
         {.eye = {0, 0, 0}, .look_at = {0, 0, -4}, .vertical_fov_degrees = 40.0f, .width = 29, .height = 17},
         {.aperture = 0.2f, .focus_distance = 3.5f});
@@ -146,26 +147,36 @@ TEST_CASE("adaptive sampling hands its pixel corners over in groups and renders 
         CHECK(same_bytes(with.image, without.image));
         CHECK(with.samples == without.samples);
         CHECK(with.stats.rays == without.stats.rays);
-        // Every pixel corner of every tile, in groups of two rows of corners (three in a tile's first row, one in
-        // the last row of a tile with an odd count of rows), and nothing else: the lattice points inside pixels are
-        // still traced one at a time.
-        std::size_t grouped_samples = 0, expected_samples = 0, expected_groups = 0;
-        bool corners_only = true;
+        // Every camera ray in a group: the pixel corners of every tile two rows of pixels at a time, with up to
+        // 3 (tile + 1) rays, then the points inside the pixels that the squares whose corners differ need, level by
+        // level, with at most as many rays as one pixel may trace (9 x 9 at depth 3).
+        std::size_t grouped_samples = 0, corner_samples = 0, corner_groups = 0, expected_corners = 0,
+                    expected_corner_groups = 0, largest_inner_group = 0;
         for (const auto& keys : grouped.groups()) {
-            for (const SampleKey& k : keys) corners_only = corners_only && k.x % 8 == 0 && k.y % 8 == 0;
             grouped_samples += keys.size();
+            const bool corners =
+                std::all_of(keys.begin(), keys.end(), [](const SampleKey& k) { return k.x % 8 == 0 && k.y % 8 == 0; });
+            if (corners) {
+                corner_samples += keys.size();
+                ++corner_groups;
+                CHECK(keys.size() <= 3 * static_cast<std::size_t>(tile + 1));
+            } else {
+                largest_inner_group = std::max(largest_inner_group, keys.size());
+            }
         }
         for (int y0 = 0; y0 < camera.height(); y0 += tile)
             for (int x0 = 0; x0 < camera.width(); x0 += tile) {
                 const auto columns = static_cast<std::size_t>(std::min(tile, camera.width() - x0));
                 const auto rows = static_cast<std::size_t>(std::min(tile, camera.height() - y0));
-                expected_samples += (columns + 1) * (rows + 1);
-                expected_groups += (rows + 1) / 2;
+                expected_corners += (columns + 1) * (rows + 1);
+                expected_corner_groups += (rows + 1) / 2;
             }
-        CHECK(corners_only);
-        CHECK(grouped_samples == expected_samples);
-        CHECK(grouped.groups().size() == expected_groups);
-        CHECK(with.stats.rays.camera > expected_samples);  // the noise made it refine
+        CHECK(grouped_samples == with.stats.rays.camera);
+        CHECK(corner_samples == expected_corners);
+        CHECK(corner_groups == expected_corner_groups);
+        CHECK(largest_inner_group > 0);
+        CHECK(largest_inner_group <= 81);
+        CHECK(with.stats.rays.camera > 2 * expected_corners);  // the noise made it refine
     }
 }
 
@@ -256,26 +267,33 @@ TEST_CASE("a stopped render returns promptly with the finished tiles and writes 
 
 TEST_CASE("a stop during an adaptive render ends it within one pixel per thread", "[renderer]") {
     // Pure noise at depth 6: every pixel traces up to 65^2 = 4,225 rays, the whole image 16.8 million.
-    std::atomic<bool> stop{false};
-    std::atomic<int> calls{0};
-    const FunctionRadiance noise([&](const Ray&, const SampleKey& key, RayCounters&) {
-        if (++calls == 5000) stop = true;
-        return RGB(sample_uniform(key, 0));
-    });
-    RenderSettings s;
-    s.pattern = PixelPattern::adaptive;
-    s.adaptive = {6, 0.1f};
-    s.threads = 2;
-    RenderCallbacks cb;
-    cb.stop = &stop;
-    const RenderResult res = render(test::ImagePlaneCamera(64, 64), noise, s, cb);
-    CHECK(res.stats.cancelled);
-    CHECK(res.stats.tiles_done == 0);
-    CHECK(res.stats.rays.camera == static_cast<std::uint64_t>(calls.load()));
-    CHECK(res.stats.rays.camera < 5000 + 2 * 65 * 65);
-    const auto rendered = std::count_if(res.samples.begin(), res.samples.end(), [](auto n) { return n > 0; });
-    CHECK(rendered >= 1);
-    CHECK(rendered <= 4);
+    for (const bool packets : {false, true}) {
+        INFO("packets " << packets);
+        std::atomic<bool> stop{false};
+        std::atomic<int> calls{0};
+        const FunctionRadiance noise([&](const Ray&, const SampleKey& key, RayCounters&) {
+            if (++calls == 5000) stop = true;
+            return RGB(sample_uniform(key, 0));
+        });
+        RenderSettings s;
+        s.pattern = PixelPattern::adaptive;
+        s.adaptive = {6, 0.1f};
+        s.threads = 2;
+        s.packets = packets;
+        RenderCallbacks cb;
+        cb.stop = &stop;
+        const RenderResult res = render(test::ImagePlaneCamera(64, 64), noise, s, cb);
+        CHECK(res.stats.cancelled);
+        CHECK(res.stats.tiles_done == 0);
+        CHECK(res.stats.rays.camera == static_cast<std::uint64_t>(calls.load()));
+        // One pixel's rays, or one group's (no larger), per thread after the stop.
+        CHECK(res.stats.rays.camera < 5000 + 2 * 65 * 65);
+        const auto rendered = std::count_if(res.samples.begin(), res.samples.end(), [](auto n) { return n > 0; });
+        CHECK(rendered <= 4);
+        // Ray by ray, the pixels traced before the stop are kept; in groups a row's inner points are traced before
+        // its first pixel is done, so 5,000 rays may end no pixel of a noisy row.
+        if (!packets) CHECK(rendered >= 1);
+    }
 }
 
 TEST_CASE("bad render settings are rejected with a reason", "[renderer]") {

@@ -109,12 +109,11 @@ bool render_fixed_tile_groups(const TileContext& c, const Tile& t, RayCounters& 
 /// R = 2^max_depth. The bottom lattice row becomes the next pixel row's top, so every lattice point of a
 /// tile is traced at most once.
 ///
-/// With RenderSettings::packets the pixel corners (every R-th point of every R-th lattice row, which every
-/// pixel traces) of two pixel rows go to the radiance source as one group before the squares of the first
-/// row are looked at: coherent camera rays, like a fixed pattern's; the points inside the pixels, traced
-/// only where the corners differ, stay one at a time. A corner traced ahead is counted (RenderResult::samples)
-/// by the pixel that first asks for it, as it would have been traced, so counts and image are the same
-/// either way.
+/// With RenderSettings::packets the camera rays go to the radiance source in groups of coherent rays, as a
+/// fixed pattern's do: the pixel corners (every R-th point of every R-th lattice row, which every pixel traces)
+/// of two pixel rows at a time, then the points inside a row's pixels level by level, those that the recursion
+/// will ask for, before it runs. A point traced ahead is counted (RenderResult::samples) by the pixel that first
+/// asks for it, as it would have been traced, so counts and image are the same either way.
 class AdaptiveRow {
 public:
     AdaptiveRow(const TileContext& c, const Tile& t)
@@ -128,7 +127,10 @@ public:
     /// Renders pixel row y of the tile; false when stopped before its end.
     bool render_row(int y, RayCounters& counters) {
         m_y = y;
-        if (m_c.settings.packets) trace_pixel_corners(counters);
+        if (m_c.settings.packets) {
+            trace_pixel_corners(counters);
+            if (!trace_refinements(counters)) return false;
+        }
         for (int x = m_tile.x0; x < m_tile.x1; ++x) {
             // Per pixel: at depth 8 one pixel may trace 66,049 rays.
             if (stopped(m_c.callbacks)) return false;
@@ -148,8 +150,11 @@ public:
 
 private:
     // A lattice point's value is not traced yet, traced and counted by a pixel, or traced ahead in a group and
-    // not yet counted.
-    static constexpr unsigned char kNotTraced = 0, kCounted = 1, kTracedAhead = 2;
+    // not yet counted (kQueued: in the group being formed).
+    static constexpr unsigned char kNotTraced = 0, kCounted = 1, kTracedAhead = 2, kQueued = 3;
+    // The most squares trace_refinements() takes in one level, which bounds what its levels hold (3 MB of the next
+    // level's squares; depth 3 makes at most 64 pixels x 16 squares a level, depth 8 reaches the bound).
+    static constexpr std::size_t kMaxRefinementSquares = 1u << 16;
 
     std::size_t index(int i, int j) const {
         return static_cast<std::size_t>(j) * static_cast<std::size_t>(m_cols) + static_cast<std::size_t>(i);
@@ -178,6 +183,71 @@ private:
             ++m_traced;
         }
         return m_values[k];
+    }
+
+    // The lattice points inside the row's pixels that square() will ask for, traced ahead level by level: at each
+    // level the squares whose corners differ (the same decision square() takes on the same values) hand the midpoints
+    // of their sides and their centre to a group. A group holds at most as many points as one pixel may trace, so a
+    // stop (looked at after each group) still ends the render within about one pixel's rays per thread; past
+    // kMaxRefinementSquares squares in a level, square() traces the rest one at a time.
+    bool trace_refinements(RayCounters& counters) {
+        const std::size_t group_limit = static_cast<std::size_t>(m_res + 1) * static_cast<std::size_t>(m_res + 1);
+        m_squares.clear();
+        for (int p = 0; p < m_tile.x1 - m_tile.x0; ++p) m_squares.push_back({p * m_res, 0, m_res});
+        m_group.clear();
+        m_targets.clear();
+        while (!m_squares.empty() && m_squares.size() <= kMaxRefinementSquares) {
+            m_next.clear();
+            for (const Square& q : m_squares) {
+                if (q.size == 1 || !differ(ahead(q.i, q.j), ahead(q.i + q.size, q.j), ahead(q.i, q.j + q.size),
+                                           ahead(q.i + q.size, q.j + q.size)))
+                    continue;
+                const int h = q.size / 2;
+                for (const auto& [di, dj] : {std::pair{h, 0}, {0, h}, {h, h}, {q.size, h}, {h, q.size}}) {
+                    const std::size_t k = index(q.i + di, q.j + dj);
+                    if (m_state[k] != kNotTraced) continue;
+                    m_state[k] = kQueued;
+                    const auto [position, key] = lattice_point(q.i + di, q.j + dj, m_y);
+                    m_group.push_back(CameraSample{camera_ray(m_c, position, key, counters),
+                                                   SampleStream(SampleSequence::independent, key)});
+                    m_targets.push_back(Target{false, k});
+                }
+                for (const auto& [di, dj] : {std::pair{0, 0}, {h, 0}, {0, h}, {h, h}})
+                    m_next.push_back({q.i + di, q.j + dj, h});
+                if (m_group.size() + 5 > group_limit && !flush_group(counters)) return false;
+            }
+            // The next level's squares read this level's points.
+            if (!flush_group(counters)) return false;
+            std::swap(m_squares, m_next);
+        }
+        return true;
+    }
+
+    // Traces the group formed so far (trace_group); false when the render has been stopped.
+    bool flush_group(RayCounters& counters) {
+        trace_group(counters);
+        m_group.clear();
+        m_targets.clear();
+        return !stopped(m_c.callbacks);
+    }
+
+    // A lattice point's value that trace_refinements() knows: one traced before it looks at the point's square.
+    const RGB& ahead(int i, int j) const { return m_values[index(i, j)]; }
+
+    // Traces m_group with radiance_batch() and stores each value where its m_targets entry says.
+    void trace_group(RayCounters& counters) {
+        if (m_group.empty()) return;
+        m_group_values.resize(m_group.size());
+        m_c.radiance.radiance_batch(m_group, m_group_values, counters);
+        for (std::size_t g = 0; g < m_group.size(); ++g) {
+            const Target& target = m_targets[g];
+            if (target.ahead) {
+                m_ahead[target.index] = m_group_values[g];
+            } else {
+                m_values[target.index] = m_group_values[g];
+                m_state[target.index] = kTracedAhead;
+            }
+        }
     }
 
     // The pixel corners of row m_y not traced yet (its top ones only in a tile's first row) and, when the tile has
@@ -210,18 +280,8 @@ private:
                 m_targets.push_back(ahead ? Target{true, static_cast<std::size_t>(p)} : Target{false, index(i, j)});
             }
         }
-        m_group_values.resize(m_group.size());
-        m_c.radiance.radiance_batch(m_group, m_group_values, counters);
         m_ahead.resize(static_cast<std::size_t>(pixels + 1));
-        for (std::size_t g = 0; g < m_group.size(); ++g) {
-            const Target& target = m_targets[g];
-            if (target.ahead) {
-                m_ahead[target.index] = m_group_values[g];
-            } else {
-                m_values[target.index] = m_group_values[g];
-                m_state[target.index] = kTracedAhead;
-            }
-        }
+        trace_group(counters);
         m_ahead_row = next_row ? m_y + 1 : -1;
     }
 
@@ -278,6 +338,10 @@ private:
         bool ahead;         // into m_ahead rather than m_values
         std::size_t index;  // in m_ahead or m_values
     };
+    struct Square {
+        int i, j, size;  // as square() takes them
+    };
+    std::vector<Square> m_squares, m_next;  // trace_refinements()'s squares of this level and of the next
     std::vector<CameraSample> m_group;
     std::vector<RGB> m_group_values;
     std::vector<Target> m_targets;
