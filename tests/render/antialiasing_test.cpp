@@ -141,7 +141,10 @@ RenderResult adaptive_case(const RadianceSource& source, int depth, int tile_siz
 /// Counts how often each lattice position was traced.
 class CountingSource final : public RadianceSource {
 public:
-    explicit CountingSource(std::function<RGB(const Ray&, const SampleKey&)> f) : m_f(std::move(f)) {}
+    /// batches: claims radiance_batch() is faster (RadianceSource::traces_batches), for the renderer to form groups.
+    explicit CountingSource(std::function<RGB(const Ray&, const SampleKey&)> f, bool batches = false)
+        : m_f(std::move(f)), m_batches(batches) {}
+    bool traces_batches() const override { return m_batches; }
     RGB radiance(const Ray& r, const SampleKey& key, RayCounters&) const override {
         std::lock_guard lock(m_mutex);
         ++m_traced[{key.x, key.y}];
@@ -156,6 +159,7 @@ public:
 
 private:
     std::function<RGB(const Ray&, const SampleKey&)> m_f;
+    bool m_batches;
     mutable std::mutex m_mutex;
     mutable std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> m_traced;
 };
@@ -223,7 +227,7 @@ TEST_CASE("adaptive sampling terminates on pure noise at the sample cap", "[aa]"
     auto deep_noise = [](const Ray&, const SampleKey& key) {
         return RGB(sample_uniform(key, 0), sample_uniform(key, 1), sample_uniform(key, 2));
     };
-    const CountingSource grouped(deep_noise), single(deep_noise);
+    const CountingSource grouped(deep_noise, true), single(deep_noise);
     const RenderResult with = adaptive_case(grouped, 8, 64, 12, 1);
     RenderSettings s = adaptive(8, 0.3f);
     s.packets = false;

@@ -113,6 +113,7 @@ public:
         std::lock_guard lock(m_mutex);
         m_groups.push_back(std::move(keys));
     }
+    bool traces_batches() const override { return true; }
     std::vector<std::vector<SampleKey>> groups() const {
         std::lock_guard lock(m_mutex);
         return m_groups;
@@ -265,21 +266,40 @@ TEST_CASE("a stopped render returns promptly with the finished tiles and writes 
     std::filesystem::remove_all(dir);
 }
 
+namespace {
+
+/// A FunctionRadiance that may claim radiance_batch() is faster (RadianceSource::traces_batches).
+class BatchingFunction final : public RadianceSource {
+public:
+    BatchingFunction(FunctionRadiance::Function f, bool batches) : m_f(std::move(f)), m_batches(batches) {}
+    RGB radiance(const Ray& r, const SampleKey& key, RayCounters& counters) const override {
+        return m_f(r, key, counters);
+    }
+    bool traces_batches() const override { return m_batches; }
+
+private:
+    FunctionRadiance::Function m_f;
+    bool m_batches;
+};
+
+}  // namespace
+
 TEST_CASE("a stop during an adaptive render ends it within one pixel per thread", "[renderer]") {
     // Pure noise at depth 6: every pixel traces up to 65^2 = 4,225 rays, the whole image 16.8 million.
-    for (const bool packets : {false, true}) {
-        INFO("packets " << packets);
+    for (const bool batches : {false, true}) {
+        INFO("groups " << batches);
         std::atomic<bool> stop{false};
         std::atomic<int> calls{0};
-        const FunctionRadiance noise([&](const Ray&, const SampleKey& key, RayCounters&) {
-            if (++calls == 5000) stop = true;
-            return RGB(sample_uniform(key, 0));
-        });
+        const BatchingFunction noise(
+            [&](const Ray&, const SampleKey& key, RayCounters&) {
+                if (++calls == 5000) stop = true;
+                return RGB(sample_uniform(key, 0));
+            },
+            batches);
         RenderSettings s;
         s.pattern = PixelPattern::adaptive;
         s.adaptive = {6, 0.1f};
         s.threads = 2;
-        s.packets = packets;
         RenderCallbacks cb;
         cb.stop = &stop;
         const RenderResult res = render(test::ImagePlaneCamera(64, 64), noise, s, cb);
@@ -292,7 +312,7 @@ TEST_CASE("a stop during an adaptive render ends it within one pixel per thread"
         CHECK(rendered <= 4);
         // Ray by ray, the pixels traced before the stop are kept; in groups a row's inner points are traced before
         // its first pixel is done, so 5,000 rays may end no pixel of a noisy row.
-        if (!packets) CHECK(rendered >= 1);
+        if (!batches) CHECK(rendered >= 1);
     }
 }
 

@@ -40,6 +40,7 @@ public:
                         RayCounters& counters) const override {
         m_source.radiance_batch(samples, out, counters);
     }
+    bool traces_batches() const override { return m_source.traces_batches(); }
 
 private:
     std::unique_ptr<const Owned> m_owned;

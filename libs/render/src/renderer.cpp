@@ -109,11 +109,12 @@ bool render_fixed_tile_groups(const TileContext& c, const Tile& t, RayCounters& 
 /// R = 2^max_depth. The bottom lattice row becomes the next pixel row's top, so every lattice point of a
 /// tile is traced at most once.
 ///
-/// With RenderSettings::packets the camera rays go to the radiance source in groups of coherent rays, as a
-/// fixed pattern's do: the pixel corners (every R-th point of every R-th lattice row, which every pixel traces)
-/// of two pixel rows at a time, then the points inside a row's pixels level by level, those that the recursion
-/// will ask for, before it runs. A point traced ahead is counted (RenderResult::samples) by the pixel that first
-/// asks for it, as it would have been traced, so counts and image are the same either way.
+/// With RenderSettings::packets, for a radiance source that traces groups faster (RadianceSource::traces_batches),
+/// the camera rays go to it in groups of coherent rays, as a fixed pattern's do: the pixel corners (every R-th point of
+/// every R-th lattice row, which every pixel traces) of two pixel rows at a time, then the points inside a row's pixels
+/// level by level, those that the recursion will ask for, before it runs. A point traced ahead is counted
+/// (RenderResult::samples) by the pixel that first asks for it, as it would have been traced, so counts and image are
+/// the same either way.
 class AdaptiveRow {
 public:
     AdaptiveRow(const TileContext& c, const Tile& t)
@@ -127,7 +128,7 @@ public:
     /// Renders pixel row y of the tile; false when stopped before its end.
     bool render_row(int y, RayCounters& counters) {
         m_y = y;
-        if (m_c.settings.packets) {
+        if (m_c.settings.packets && m_c.radiance.traces_batches()) {
             trace_pixel_corners(counters);
             if (!trace_refinements(counters)) return false;
         }

@@ -67,6 +67,11 @@ public:
                                 RayCounters& counters) const {
         for (std::size_t i = 0; i < samples.size(); ++i) out[i] = sample_radiance(samples[i], counters);
     }
+
+    /// True when radiance_batch() traces a group faster than one sample at a time (a packet tracer over a scene it
+    /// has packets for). A renderer that pays to form its groups -- adaptive sampling decides which points it needs
+    /// ahead of its recursion -- forms them only then.
+    virtual bool traces_batches() const { return false; }
 };
 
 /// \brief A radiance source that draws every number of a sample from a SampleStream: the progressive renderer's

@@ -49,6 +49,8 @@ public:
     /// spans two rows.
     void radiance_batch(std::span<const CameraSample> samples, std::span<RGB> out,
                         RayCounters& counters) const override;
+    /// When the scene has packets for some of its objects (WhittedIntegrator::traces_packets).
+    bool traces_batches() const override { return m_integrator.traces_packets(); }
 
 private:
     const WhittedIntegrator& m_integrator;

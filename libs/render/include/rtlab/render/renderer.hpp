@@ -27,9 +27,9 @@ struct RenderSettings {
     int threads = 0;  ///< 0: as many as the machine has (TBB's default)
     /// The fixed patterns (none, grid, random, jittered) and sobol hand the radiance source groups of coherent
     /// samples, one sample index over up to two pixel rows of a tile (RadianceSource::radiance_batch; a fixed
-    /// pattern's samples with the independent stream of their key), and adaptive sampling its pixel corners two
-    /// pixel rows at a time; false: one sample at a time (radiance(), or sample_radiance() for sobol), for
-    /// measurements. The image is the same either way.
+    /// pattern's samples with the independent stream of their key), and adaptive sampling its points (ahead of its
+    /// recursion, for a source whose traces_batches() is true); false: one sample at a time (radiance(), or
+    /// sample_radiance() for sobol), for measurements. The image is the same either way.
     bool packets = true;
 };
 
