@@ -35,8 +35,22 @@ struct Lanes {
     typedef std::int32_t I __attribute__((vector_size(4 * W)));
 };
 
+/// x in every lane: one broadcast. The sum with the zero vector this was kept an addition a splat (GCC must: x + 0
+/// is +0 for x = -0), 7% of the closest-hit packet walk's instructions (bunny --packets, callgrind); a list
+/// initializer, a difference with zero or a shuffle of lane 0 became inserts or blends. Eight lanes run only in the
+/// AVX2 walks and leaf tests, where inline assembly inlines and an AVX intrinsic would not (see walk_lane_bits).
 template <int W>
 [[gnu::always_inline]] inline typename Lanes<W>::F splat(float x) {
+#if RTLAB_KD_HAVE_AVX2_LEAVES
+    if constexpr (W == 8) {
+        typename Lanes<W>::F v;
+        asm("vbroadcastss %1, %0" : "=x"(v) : "xm"(x));
+        return v;
+    }
+#endif
+#if defined(__SSE__)
+    if constexpr (W == 4) return reinterpret_cast<typename Lanes<W>::F>(_mm_set1_ps(x));
+#endif
     return typename Lanes<W>::F{} + x;
 }
 template <int W>
