@@ -162,10 +162,11 @@ private:
         return build_kd_tree(input, strategy, cost, options.threads);
     }
 
-    // Runs f in an arena of `threads` threads (0: the caller's), as build_kd_tree does the build.
+    // Runs f in an arena of `threads` threads (0: the caller's), as build_kd_tree does the build: in the
+    // caller's when it has that many (see there).
     template <class F>
     static void in_arena(int threads, F&& f) {
-        if (threads > 0)
+        if (threads > 0 && tbb::this_task_arena::max_concurrency() != threads)
             tbb::task_arena(threads).execute(f);
         else
             f();
