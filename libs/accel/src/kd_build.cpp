@@ -437,6 +437,16 @@ KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const K
     else
         run();
 
+    // The flat arrays sized once from the build's nodes (node 1 is padding; a leaf of one primitive keeps
+    // it in its node): grown by doubling, they were copied again and again into fresh memory, serially.
+    std::size_t node_count = 1, index_count = 0;
+    for (const std::deque<BuildNode>& nodes : arena)
+        for (const BuildNode& node : nodes) {
+            ++node_count;
+            if (node.primitives.size() > 1) index_count += node.primitives.size();
+        }
+    out.nodes.reserve(node_count);
+    out.primitive_indices.reserve(index_count);
     Flattener f{out, cost};
     out.stats.sah_cost = f.flatten_root(*root, out.bounds);
     out.max_depth = static_cast<int>(f.max_depth) + 1;
