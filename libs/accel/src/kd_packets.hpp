@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -104,22 +105,27 @@ public:
     }
     /// Room for `packets` packets, to be filled by fill_leaf (sized once: growing packet by packet moved
     /// the whole array again and again).
+    /// Left uninitialized: fill_leaf writes every float of every packet (each row of every lane, a short
+    /// leaf's last lanes repeating its last triangle). Zeroed first, the bunny's 5 MB cost a serial pass
+    /// before the parallel fill, and the fresh pages' faults fell in it: a quarter of the page faults of
+    /// a bunny build (perf, page-faults event).
     void allocate(std::size_t packets) {
-        m_data.assign(packets * packet_floats(), 0.0f);
-        m_bounds.assign(packets * 6, 0.0f);
+        m_data.allocate(packets * packet_floats());
+        m_bounds.allocate(packets * 6);
     }
     /// Writes a leaf's triangles (mesh indices) into packets_for(size) packets from packet `first`. Leaves
     /// in packets of their own may be filled from several threads at once.
     void fill_leaf(const TriangleMesh& mesh, std::span<const std::uint32_t> triangles, std::uint32_t first) {
         const std::size_t block = packet_floats();
         std::size_t base = static_cast<std::size_t>(first) * block;
-        float* bounds = &m_bounds[static_cast<std::size_t>(first) * 6];
+        float* bounds = &m_bounds.data[static_cast<std::size_t>(first) * 6];
         for (std::size_t k = 0; k < triangles.size(); k += static_cast<std::size_t>(m_width), base += block) {
             AABB box;
             for (std::size_t lane = 0; lane < static_cast<std::size_t>(m_width); ++lane) {
                 const std::uint32_t i = triangles[std::min(k + lane, triangles.size() - 1)];
-                fill_lane(mesh, i, &m_data[base], lane);
-                std::memcpy(&m_data[base + static_cast<std::size_t>(m_width * (m_rows - 1)) + lane], &i, sizeof(i));
+                fill_lane(mesh, i, &m_data.data[base], lane);
+                std::memcpy(&m_data.data[base + static_cast<std::size_t>(m_width * (m_rows - 1)) + lane], &i,
+                            sizeof(i));
                 for (int c = 0; c < 3; ++c) box.expand(mesh.corner(i, c));
             }
             for (int a = 0; a < 3; ++a) {
@@ -130,10 +136,12 @@ public:
         }
     }
 
-    std::size_t bytes() const { return (m_data.size() + m_bounds.size()) * sizeof(float); }
+    std::size_t bytes() const { return (m_data.size + m_bounds.size) * sizeof(float); }
     /// Packet k's box: the corners' smallest x, y, z, then their largest (the packet walk's cull).
-    const float* bounds(std::uint32_t k) const { return m_bounds.data() + static_cast<std::size_t>(k) * 6; }
-    const float* packet(std::uint32_t k) const { return m_data.data() + static_cast<std::size_t>(k) * packet_floats(); }
+    const float* bounds(std::uint32_t k) const { return m_bounds.data.get() + static_cast<std::size_t>(k) * 6; }
+    const float* packet(std::uint32_t k) const {
+        return m_data.data.get() + static_cast<std::size_t>(k) * packet_floats();
+    }
     /// The mesh's triangle in a lane of packet p (a pointer from packet()).
     std::uint32_t original(const float* p, int lane) const {
         std::uint32_t i;
@@ -178,8 +186,17 @@ private:
     TriangleTest m_test = TriangleTest::watertight;
     int m_rows = 10;
     int m_width = 4;
-    std::vector<float> m_data;
-    std::vector<float> m_bounds;
+    /// Floats allocated without a value (std::vector would zero them).
+    struct Floats {
+        std::unique_ptr<float[]> data;
+        std::size_t size = 0;
+        void allocate(std::size_t n) {
+            data = std::make_unique_for_overwrite<float[]>(n);
+            size = n;
+        }
+    };
+    Floats m_data;
+    Floats m_bounds;
 };
 
 /// \brief The per-ray constants of a packet test (scalars: each leaf test spreads them over its lanes).

@@ -164,17 +164,29 @@ namespace {
 /// the events, then costed in loops the compiler vectorizes. The lists are the thread's, reused from node to
 /// node (a sweep never waits on other tasks, so no other node's sweep runs on the thread meanwhile).
 struct Candidates {
-    std::unique_ptr<float[]> position, cost_left, cost_right;
-    std::unique_ptr<std::int32_t[]> n_left, n_right, planar;
+    float *position = nullptr, *cost_left = nullptr, *cost_right = nullptr;
+    std::int32_t *n_left = nullptr, *n_right = nullptr, *planar = nullptr;
     std::size_t capacity = 0, size = 0;
 
-    // Room for n candidates, left uninitialized (every one is written before it is read).
+    // Room for n candidates, left uninitialized (every one is written before it is read). The six lists
+    // in two blocks: a node too large for the kept lists allocates them afresh, and six blocks each were
+    // 31,722 mallocs in a bunny build, 12.4 M Ir of its 843 M (callgrind).
     void reserve(std::size_t n) {
         if (capacity >= n) return;
-        for (auto* v : {&position, &cost_left, &cost_right}) v->reset(new float[n]);
-        for (auto* v : {&n_left, &n_right, &planar}) v->reset(new std::int32_t[n]);
+        floats.reset(new float[3 * n]);
+        ints.reset(new std::int32_t[3 * n]);
+        position = floats.get();
+        cost_left = position + n;
+        cost_right = cost_left + n;
+        n_left = ints.get();
+        n_right = n_left + n;
+        planar = n_right + n;
         capacity = n;
     }
+
+private:
+    std::unique_ptr<float[]> floats;
+    std::unique_ptr<std::int32_t[]> ints;
 };
 
 constexpr std::size_t kKeptCandidates = 1u << 10;
@@ -237,10 +249,10 @@ void gather(const std::vector<Event>& events, std::size_t n, float lo, float hi,
     c.reserve(events.size());
     const Event* ev = events.data();
     const std::size_t size = events.size();
-    float* position_out = c.position.get();
-    std::int32_t* n_left_out = c.n_left.get();
-    std::int32_t* n_right_out = c.n_right.get();
-    std::int32_t* planar_out = c.planar.get();
+    float* position_out = c.position;
+    std::int32_t* n_left_out = c.n_left;
+    std::int32_t* n_right_out = c.n_right;
+    std::int32_t* planar_out = c.planar;
     const auto all = static_cast<std::int32_t>(n);
     std::size_t k = 0;
     // Before the current step: starts and planar events (left of the planes after them), ends and planar
@@ -301,12 +313,12 @@ void cost_candidates(const AABB& box, const KdCostModel& cost, Candidates& c) {
                     z = Axis == 2 ? along : extent.z;
         return 2.0f * (x * y + y * z + z * x);
     };
-    const float* position = c.position.get();
-    const std::int32_t* n_left = c.n_left.get();
-    const std::int32_t* n_right = c.n_right.get();
-    const std::int32_t* planar = c.planar.get();
-    float* cost_left = c.cost_left.get();
-    float* cost_right = c.cost_right.get();
+    const float* position = c.position;
+    const std::int32_t* n_left = c.n_left;
+    const std::int32_t* n_right = c.n_right;
+    const std::int32_t* planar = c.planar;
+    float* cost_left = c.cost_left;
+    float* cost_right = c.cost_right;
     const std::size_t size = c.size;
     for (std::size_t k = 0; k < size; ++k) {
         const float p_left = area(position[k] - lo) * inv;
@@ -324,8 +336,8 @@ void cost_candidates(const AABB& box, const KdCostModel& cost, Candidates& c) {
 // The first cheapest candidate of one axis, planar primitives left before right at each plane, if cheaper
 // than best. Without planar primitives both costs are equal, so the right one never wins there.
 void pick(int axis, const Candidates& c, Split& best) {
-    const float* cost_left = c.cost_left.get();
-    const float* cost_right = c.cost_right.get();
+    const float* cost_left = c.cost_left;
+    const float* cost_right = c.cost_right;
     // The least cost first, four candidates at a time (costs are finite and positive, so the vector
     // minimum is the scalar one), then, only when it beats the best so far, its first candidate: the one
     // one candidate after the other with `<` finds.
