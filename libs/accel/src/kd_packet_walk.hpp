@@ -290,12 +290,17 @@ template <TriangleTest Test, bool AnyHit, int W, int LeafW>
     // The leaf tests' per-ray constants, only for rays that reach the root box (most camera rays of a view
     // with the mesh in the middle do not: 10% fewer instructions in the packet walks of rtlab-accel --packets,
     // bunny, callgrind); a ray the single trace answers as a miss for its leaf test (an
-    // invalid PacketRay) is left out, as it is there before the walk.
+    // invalid PacketRay: one with a zero direction, its origin and direction being finite here) is left out, as it
+    // is there before the walk. The lanes' checks side by side rather than each PacketRay's own: 3.5% fewer
+    // instructions in the closest-hit packet walk (bunny --packets, callgrind).
+    if constexpr (Test == TriangleTest::watertight) {
+        const F zero{};
+        valid &= walk_lane_bits<W>((d[0] != zero) | (d[1] != zero) | (d[2] != zero));
+    }
     Deferred<PacketRay<Test>> packet_rays[W];
     for (int rest = valid; rest != 0; rest &= rest - 1) {
         const int lane = __builtin_ctz(static_cast<unsigned>(rest));
-        new (&packet_rays[lane].value) PacketRay<Test>(rays[static_cast<std::size_t>(lane)]);
-        if (!packet_rays[lane].value.valid()) valid &= ~(1 << lane);
+        new (&packet_rays[lane].value) PacketRay<Test>(rays[static_cast<std::size_t>(lane)], true);
     }
     // kd_walk's margins: overlap from max(|tmin|, |tmax|) as std::max takes it, end_slack +inf for a zero
     // direction component.

@@ -212,10 +212,14 @@ struct PacketRay<TriangleTest::watertight> {
     float ox = 0, oy = 0, oz = 0, sx = 0, sy = 0, sz = 0;  // origin and shear, already permuted to (kx, ky, kz)
     // The shear of WatertightRay, computed inline (it is per ray); the rare scalar fallback builds the
     // WatertightRay itself, and the tests compare both paths with the scalar test.
-    explicit PacketRay(const Ray& r) : ray(r), tmin(r.tmin) {
-        const Vec3& d = r.direction;
-        ok = is_finite(r.origin) && is_finite(d) && (d.x != 0.0f || d.y != 0.0f || d.z != 0.0f);
+    explicit PacketRay(const Ray& r)
+        : PacketRay(r, is_finite(r.origin) && is_finite(r.direction) &&
+                           (r.direction.x != 0.0f || r.direction.y != 0.0f || r.direction.z != 0.0f)) {}
+    /// For a ray already known to have a finite origin and a finite, nonzero direction (usable), or not: the
+    /// packet walk checks its lanes together.
+    PacketRay(const Ray& r, bool usable) : ray(r), tmin(r.tmin), ok(usable) {
         if (!ok) return;
+        const Vec3& d = r.direction;
         kz = max_dimension(glm::abs(d));
         kx = kz == 2 ? 0 : kz + 1;
         ky = kx == 2 ? 0 : kx + 1;
@@ -234,6 +238,7 @@ template <>
 struct PacketRay<TriangleTest::moller> {
     const Ray& ray;
     explicit PacketRay(const Ray& r) : ray(r) {}
+    PacketRay(const Ray& r, bool) : ray(r) {}
     bool valid() const { return true; }
 };
 
@@ -241,6 +246,7 @@ template <>
 struct PacketRay<TriangleTest::plane> {
     const Ray& ray;
     explicit PacketRay(const Ray& r) : ray(r) {}
+    PacketRay(const Ray& r, bool) : ray(r) {}
     bool valid() const { return true; }
 };
 
