@@ -72,7 +72,10 @@ inline bool Sphere::intersect_distance(const Ray& ray, RayTerms& terms, float& t
     const float c = terms.oo - m_radius * m_radius;
     // Starting outside and moving away: both roots are negative as stable_roots() rounds them (q < 0, so
     // c / q and q / a are <= 0), which no tmin >= 0 admits; the test costs two compares of numbers the roots need
-    // anyway.
+    // anyway. Tried: this test, the wide test below, the roots' order and the choice of root, the quad's test, the
+    // spawn offset and the sphere hit's error bounds made branch-free (& of the compares, bit masks), the same bits:
+    // 38% fewer mispredicted branches in callgrind's simulation (rtlab-whitted 320x240, 2.37 M -> 1.46 M) but 5%
+    // more instructions, and 5-6% more CPU time at 1280x960 (11 alternating rounds); this CPU predicts them better.
     if (b > 0.0f && c > 0.0f && ray.tmin >= 0.0f) return false;
     // |oc|^2 - b^2 / a loses everything for a far ray; the perpendicular vector keeps full precision.
     if (!terms.perp_known) {
