@@ -5,6 +5,7 @@
 #include <rtlab/core/error.hpp>
 
 #include "kd_split.hpp"
+#include "thread_arena.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_invoke.h>
@@ -429,13 +430,7 @@ KdTreeData build_kd_tree(const KdBuildInput& input, KdStrategy strategy, const K
             root = Builder(input, PrimitiveStrategy{strategy, cost}, max_depth, arena)
                        .build_root(std::move(prims), out.bounds);
     };
-    // An arena of its own only when the caller's has another thread count: a nested arena's start, its
-    // worker leaving the caller's arena to join it, cost 50-85 us (median, this 2-core machine) where the
-    // same parallel_for ran in 4-15 us in the caller's arena of 2 (rtlab-accel --threads 2 builds in one).
-    if (threads > 0 && tbb::this_task_arena::max_concurrency() != threads)
-        tbb::task_arena(threads).execute(run);
-    else
-        run();
+    accel::run_on_threads(threads, run);
 
     // The flat arrays sized once from the build's nodes (node 1 is padding; a leaf of one primitive keeps
     // it in its node): grown by doubling, they were copied again and again into fresh memory, serially.

@@ -6,10 +6,10 @@
 #include "kd_packet_walk.hpp"
 #include "kd_packets.hpp"
 #include "mesh_triangles.hpp"
+#include "thread_arena.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <span>
@@ -149,7 +149,7 @@ private:
                             const KdCostModel& cost) {
         KdBuildInput input;
         input.bounds.resize(mesh.triangle_count());
-        in_arena(options.threads, [&] {
+        accel::run_on_threads(options.threads, [&] {
             tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 4096),
                               [&](const tbb::blocked_range<std::size_t>& r) {
                                   for (std::size_t i = r.begin(); i != r.end(); ++i)
@@ -160,16 +160,6 @@ private:
             return accel::clip_triangle(mesh.corner(i, 0), mesh.corner(i, 1), mesh.corner(i, 2), box);
         };
         return build_kd_tree(input, strategy, cost, options.threads);
-    }
-
-    // Runs f in an arena of `threads` threads (0: the caller's), as build_kd_tree does the build: in the
-    // caller's when it has that many (see there).
-    template <class F>
-    static void in_arena(int threads, F&& f) {
-        if (threads > 0 && tbb::this_task_arena::max_concurrency() != threads)
-            tbb::task_arena(threads).execute(f);
-        else
-            f();
     }
 
     // Copies each leaf's triangles into consecutive packets (one cache-line run per leaf for incoherent
@@ -188,7 +178,7 @@ private:
         }
         m_packets.allocate(packets);
         const auto width = static_cast<std::size_t>(m_packets.width());
-        in_arena(threads, [&] {
+        accel::run_on_threads(threads, [&] {
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(0, leaves.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
                     // A range's leaves share these lists (two allocations per leaf before: 12,000 on the bunny).

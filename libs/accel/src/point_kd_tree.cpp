@@ -1,8 +1,9 @@
 #include <rtlab/accel/point_kd_tree.hpp>
 #include <rtlab/core/error.hpp>
 
+#include "thread_arena.hpp"
+
 #include <tbb/parallel_invoke.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <sstream>
@@ -52,10 +53,7 @@ PointKdTree::PointKdTree(std::span<const Point3> points, int threads) {
         m_nodes[i] = {p, static_cast<std::uint32_t>(i) << 2};
         m_bounds.expand(p);
     }
-    if (threads > 0)
-        tbb::task_arena(threads).execute([&] { build(m_nodes); });
-    else
-        build(m_nodes);
+    accel::run_on_threads(threads, [&] { build(m_nodes); });
 }
 
 void PointKdTree::build(std::span<Node> nodes) {
