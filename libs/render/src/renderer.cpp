@@ -208,10 +208,7 @@ private:
                     const std::size_t k = index(q.i + di, q.j + dj);
                     if (m_state[k] != kNotTraced) continue;
                     m_state[k] = kQueued;
-                    const auto [position, key] = lattice_point(q.i + di, q.j + dj, m_y);
-                    m_group.push_back(CameraSample{camera_ray(m_c, position, key, counters),
-                                                   SampleStream(SampleSequence::independent, key)});
-                    m_targets.push_back(Target{false, k});
+                    queue(lattice_point(q.i + di, q.j + dj, m_y), Target{false, k}, counters);
                 }
                 for (const auto& [di, dj] : {std::pair{0, 0}, {h, 0}, {0, h}, {h, h}})
                     m_next.push_back({q.i + di, q.j + dj, h});
@@ -230,6 +227,16 @@ private:
         m_group.clear();
         m_targets.clear();
         return !stopped(m_c.callbacks);
+    }
+
+    // Adds a lattice point's camera sample (with the independent stream of its key, as a fixed pattern's) to the
+    // group, its value to go to `target`.
+    struct Target;
+    void queue(const std::pair<Vec2, SampleKey>& point, const Target& target, RayCounters& counters) {
+        const auto& [position, key] = point;
+        m_group.push_back(
+            CameraSample{camera_ray(m_c, position, key, counters), SampleStream(SampleSequence::independent, key)});
+        m_targets.push_back(target);
     }
 
     // A lattice point's value that trace_refinements() knows: one traced before it looks at the point's square.
@@ -275,10 +282,8 @@ private:
                 const int i = p * m_res;
                 const bool ahead = j == 2 * bottom;
                 if (!ahead && m_state[index(i, j)] != kNotTraced) continue;
-                const auto [position, key] = ahead ? lattice_point(i, bottom, m_y + 1) : lattice_point(i, j, m_y);
-                m_group.push_back(CameraSample{camera_ray(m_c, position, key, counters),
-                                               SampleStream(SampleSequence::independent, key)});
-                m_targets.push_back(ahead ? Target{true, static_cast<std::size_t>(p)} : Target{false, index(i, j)});
+                queue(ahead ? lattice_point(i, bottom, m_y + 1) : lattice_point(i, j, m_y),
+                      ahead ? Target{true, static_cast<std::size_t>(p)} : Target{false, index(i, j)}, counters);
             }
         }
         m_ahead.resize(static_cast<std::size_t>(pixels + 1));
@@ -334,7 +339,8 @@ private:
     std::uint32_t m_traced = 0;
     std::vector<RGB> m_values;
     std::vector<unsigned char> m_state;
-    // trace_pixel_corners()'s group, where each of its values goes, and the next row's bottom corners.
+    // The group being formed (trace_pixel_corners, trace_refinements), where each of its values goes, and the next
+    // row's bottom corners.
     struct Target {
         bool ahead;         // into m_ahead rather than m_values
         std::size_t index;  // in m_ahead or m_values
